@@ -1,0 +1,60 @@
+# The two set-up commands on a fresh Debian machine are `make demo` and `make test`:
+# each installs the missing Debian packages, configures CMake into build/ and builds.
+#
+#   make build     install deps, configure (Ninja, Release) and build; binaries in build/bin/
+#   make test      build, then run every test with ctest
+#   make demo      build, then solve a generated bundle-adjustment problem (lrsvo demo)
+#   make sanitize  build into build-asan/ with ASan + UBSan and run the tests there
+#   make format    clang-format every C++ file in place
+#   make clean     remove build/ and build-asan/
+
+BUILD_DIR := build
+ASAN_DIR := build-asan
+JOBS ?= $(shell nproc)
+TEST_JOBS ?= 2
+
+# configure(<build dir>, <cmake options>): a build directory made for another source tree (a
+# copied or moved checkout) or with another generator cannot be reconfigured, so it is started
+# afresh. Configuring every time is cheap and keeps the options as stated here.
+define configure
+	@if [ -f $(1)/CMakeCache.txt ] && ! { grep -qxF 'CMAKE_HOME_DIRECTORY:INTERNAL=$(CURDIR)' $(1)/CMakeCache.txt \
+	  && grep -qxF 'CMAKE_GENERATOR:INTERNAL=Ninja' $(1)/CMakeCache.txt; }; then \
+	  echo "$(1)/ was configured for another source tree or generator: removing it"; rm -rf $(1); fi
+	cmake -S . -B $(1) -G Ninja $(2)
+endef
+
+CTEST := ctest --output-on-failure -j$(TEST_JOBS)
+
+.PHONY: all deps build test demo sanitize format clean
+
+all: build
+
+deps:
+	@bash scripts/install_deps.sh
+
+build: deps
+	$(call configure,$(BUILD_DIR),-DCMAKE_BUILD_TYPE=Release)
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+test: build
+	cd $(BUILD_DIR) && $(CTEST)
+
+demo: build
+	$(BUILD_DIR)/bin/lrsvo demo
+
+# Any sanitizer report fails the test that triggers it; the variables also reach the
+# test discovery that runs during the build.
+sanitize: export ASAN_OPTIONS := detect_leaks=1
+sanitize: export UBSAN_OPTIONS := print_stacktrace=1:halt_on_error=1
+sanitize: deps
+	$(call configure,$(ASAN_DIR),-DCMAKE_BUILD_TYPE=RelWithDebInfo -DLRSVO_SANITIZE=ON -DLRSVO_BUILD_BENCHMARKS=OFF)
+	cmake --build $(ASAN_DIR) -j $(JOBS)
+	cd $(ASAN_DIR) && $(CTEST)
+
+format:
+	@bash scripts/install_deps.sh clang-format
+	find . \( -path ./.git -o -path './build*' \) -prune -o \( -name '*.cpp' -o -name '*.h' \) -print0 \
+	  | xargs -0 -r clang-format -i
+
+clean:
+	rm -rf $(BUILD_DIR) $(ASAN_DIR)

@@ -1,0 +1,137 @@
+#include "apps/bench/ceres_bal.h"
+
+#include <cmath>
+#include <memory>
+#include <utility>
+
+#include <ceres/autodiff_cost_function.h>
+#include <ceres/ordered_groups.h>
+#include <ceres/problem.h>
+#include <ceres/rotation.h>
+#include <ceres/solver.h>
+#include <ceres/version.h>
+
+#include "graph/error.h"
+
+namespace lrsvo::bench {
+
+namespace {
+
+// The BAL (Snavely) reprojection residual, the same model as
+// edges/edge_bal_projection.cpp: camera = (angle-axis w, t, f, k1, k2),
+// P = R(w) X + t, p = -P / P_z, residual = f (1 + k1 |p|^2 + k2 |p|^4) p - observed.
+class SnavelyResidual {
+ public:
+  explicit SnavelyResidual(const Eigen::Vector2d& observed) : observed_(observed) {}
+
+  template <typename T>
+  bool operator()(const T* camera, const T* point, T* residual) const {
+    T P[3];
+    ceres::AngleAxisRotatePoint(camera, point, P);
+    for (int i = 0; i < 3; ++i) P[i] += camera[3 + i];
+    const T px = -P[0] / P[2];
+    const T py = -P[1] / P[2];
+    const T r2 = px * px + py * py;
+    const T distortion = 1.0 + r2 * (camera[7] + camera[8] * r2);
+    residual[0] = camera[6] * distortion * px - observed_.x();
+    residual[1] = camera[6] * distortion * py - observed_.y();
+    return true;
+  }
+
+  static ceres::CostFunction* create(const Eigen::Vector2d& observed) {
+    return new ceres::AutoDiffCostFunction<SnavelyResidual, 2, 9, 3>(new SnavelyResidual(observed));
+  }
+
+ private:
+  Eigen::Vector2d observed_;
+};
+
+// Ceres' summary message says which tolerance stopped it; name it as ours does.
+std::string terminationName(const ceres::Solver::Summary& summary) {
+  const std::pair<const char*, const char*> names[] = {
+      {"Function tolerance", "function_tolerance"},   {"Gradient tolerance", "gradient_tolerance"},
+      {"Parameter tolerance", "parameter_tolerance"}, {"Maximum number of iterations", "max_iterations"},
+      {"Maximum solver time", "time_limit"},          {"Minimum trust region radius", "damping_limit"},
+  };
+  for (const auto& [prefix, name] : names)
+    if (summary.message.rfind(prefix, 0) == 0) return name;
+  return ceres::TerminationTypeToString(summary.termination_type) + std::string(": ") + summary.message;
+}
+
+ceres::Solver::Options solverOptions(const SolverOptions& stopping, ceres::LinearSolverType linearSolver) {
+  ceres::Solver::Options options;
+  options.minimizer_type = ceres::TRUST_REGION;
+  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  options.linear_solver_type = linearSolver;
+  options.sparse_linear_algebra_library_type = ceres::SUITE_SPARSE;
+  options.dense_linear_algebra_library_type = ceres::EIGEN;  // Ceres' default
+  options.use_inner_iterations = false;
+  options.jacobi_scaling = true;
+  // Ceres' LM damping is 1 / radius; both start at the same lambda.
+  options.initial_trust_region_radius = 1.0 / (stopping.initialLambda > 0 ? stopping.initialLambda : 1e-4);
+  options.function_tolerance = stopping.functionTolerance;
+  options.gradient_tolerance = stopping.gradientTolerance;
+  options.parameter_tolerance = stopping.parameterTolerance;
+  options.max_num_iterations = stopping.maxIterations;
+  if (std::isfinite(stopping.maxSeconds)) options.max_solver_time_in_seconds = stopping.maxSeconds;
+  options.num_threads = stopping.threads;
+  options.logging_type = ceres::SILENT;
+  options.minimizer_progress_to_stdout = false;
+  return options;
+}
+
+}  // namespace
+
+SolveResult solveBalWithCeres(BalProblem& problem, const SolverOptions& stopping,
+                              ceres::LinearSolverType linearSolver) {
+  ceres::Problem ceresProblem;
+  for (const BalObservation& observation : problem.observations)
+    ceresProblem.AddResidualBlock(SnavelyResidual::create(observation.pixel), nullptr,
+                                  problem.cameras[observation.camera].data(), problem.points[observation.point].data());
+
+  ceres::Solver::Options options = solverOptions(stopping, linearSolver);
+  auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+  for (auto& point : problem.points)
+    if (ceresProblem.HasParameterBlock(point.data())) ordering->AddElementToGroup(point.data(), 0);
+  for (auto& camera : problem.cameras)
+    if (ceresProblem.HasParameterBlock(camera.data())) ordering->AddElementToGroup(camera.data(), 1);
+  options.linear_solver_ordering = ordering;
+
+  std::string invalid;
+  if (!options.IsValid(&invalid)) throw Error("bench: Ceres rejects the solver options: " + invalid);
+
+  ceres::Solver::Summary summary;
+  const Stopwatch stopwatch;
+  ceres::Solve(options, &ceresProblem, &summary);
+  const double seconds = stopwatch.seconds();
+  const double cpuSeconds = stopwatch.cpuSeconds();
+  if (summary.termination_type == ceres::FAILURE || summary.iterations.empty())
+    throw Error("bench: Ceres failed: " + summary.message);
+
+  SolveResult result;
+  result.termination = terminationName(summary);
+  // Steps computed, as ours counts them. summary.iterations starts with the
+  // start point and leaves out the last step when a function or parameter
+  // tolerance stops the solve: Ceres computes and evaluates that step, then
+  // discards it (ours records it and keeps it when it lowers the cost).
+  const bool stoppedOnStep = result.termination == "function_tolerance" || result.termination == "parameter_tolerance";
+  result.iterations = static_cast<int>(summary.iterations.size()) - 1 + (stoppedOnStep ? 1 : 0);
+  result.initialCost = summary.initial_cost;
+  result.finalCost = summary.final_cost;
+  result.totalSeconds = seconds;
+  result.cpuSeconds = cpuSeconds;
+  result.setupSeconds = summary.preprocessor_time_in_seconds;
+  result.linearizeSeconds = summary.jacobian_evaluation_time_in_seconds;
+  result.linearSolveSeconds = summary.linear_solver_time_in_seconds;
+  result.costSeconds = summary.residual_evaluation_time_in_seconds;
+  return result;
+}
+
+std::string ceresConfiguration() {
+  return std::string("Ceres ") + CERES_VERSION_STRING +
+         ": AutoDiff Jacobians of the Snavely model (same projection as edges/edge_bal_projection.cpp), "
+         "LEVENBERG_MARQUARDT, jacobi_scaling on, inner iterations off, points eliminated first, "
+         "sparse library SUITE_SPARSE, dense library EIGEN";
+}
+
+}  // namespace lrsvo::bench

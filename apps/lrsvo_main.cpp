@@ -1,0 +1,31 @@
+#include <algorithm>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "apps/command.h"
+#include "graph/error.h"
+
+namespace lrsvo::cli {
+std::vector<Command>& commands() {
+  static std::vector<Command> all;
+  return all;
+}
+}  // namespace lrsvo::cli
+
+int main(int argc, char** argv) {
+  CLI::App app{"lrsvo: long-range stereo visual odometry on a g2o-style graph optimiser"};
+  app.require_subcommand(1);
+  auto& commands = lrsvo::cli::commands();
+  std::sort(commands.begin(), commands.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  for (const auto& command : commands) command.add(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const lrsvo::Error& e) {
+    std::cerr << "lrsvo: error: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

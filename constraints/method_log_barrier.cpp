@@ -1,0 +1,56 @@
+#include <memory>
+#include <vector>
+
+#include "constraints/barrier_edge.h"
+#include "constraints/constraint_method.h"
+#include "graph/registry.h"
+
+namespace lrsvo {
+namespace {
+
+// The paper's method: one unary barrier edge per bounded parameter, solved
+// by the ordinary optimiser (steps leaving the box cost +inf and are
+// rejected, so lambda grows). mu shrinks over outer rounds, an
+// interior-point schedule; one round keeps mu fixed.
+class LogBarrier : public ConstraintMethod {
+ public:
+  SolverSummary solve(Graph& graph, const SolverOptions& options) override {
+    const double initialCost = graph.cost();
+    SolverSummary total;
+    mu_ = settings_.barrierMu;
+    for (int round = 0; round < std::max(1, settings_.barrierRounds); ++round, mu_ *= settings_.barrierDecrease) {
+      const SolverSummary part = ConstraintMethod::solve(graph, options);
+      if (round == 0)
+        total = part;
+      else
+        appendSummary(total, part);
+    }
+    total.initialCost = initialCost;
+    total.finalCost = graph.cost();
+    return total;
+  }
+
+  void begin(Graph& graph) override {
+    enforceStart(true);
+    for (const Bounds::Bound& bound : bounds_.all()) {
+      if (bound.vertex->fixed()) continue;
+      edges_.push_back(graph.addEdge(std::make_unique<BarrierEdge>(bound.vertex, bound.index, bound.lower,
+                                                                   bound.upper, mu_)));
+    }
+  }
+
+  void end(Graph& graph) override {
+    for (const Edge* edge : edges_) graph.removeEdge(edge);
+    edges_.clear();
+  }
+
+ private:
+  double mu_ = 0.0;
+  std::vector<const Edge*> edges_;
+};
+
+LRSVO_REGISTER(ConstraintMethod, LogBarrier, "log_barrier",
+               "the paper's log barrier: unary barrier edges with exact gradient and Hessian, mu decreased per round");
+
+}  // namespace
+}  // namespace lrsvo

@@ -1,0 +1,31 @@
+#pragma once
+
+#include "edges/pinhole.h"
+#include "graph/base_edge.h"
+#include "vertices/vertex_point3.h"
+#include "vertices/vertex_pose.h"
+
+namespace lrsvo {
+
+// Projection into the base camera (k = 0), method.md eq. 1:
+// x = pi(K0 (R X + t)); residual = x - measurement, in pixels.
+class EdgeProjectBase : public BaseEdge<2, VertexPose, VertexPoint3> {
+ public:
+  static constexpr const char* kTypeTag = "PROJECT_BASE";
+  EdgeProjectBase() = default;
+  explicit EdgeProjectBase(const PinholeIntrinsics& intrinsics) : intrinsics_(intrinsics) {}
+
+  const PinholeIntrinsics& intrinsics() const { return intrinsics_; }
+  const char* typeTag() const override { return kTypeTag; }
+  void computeResidual(Residual& residual) const override;
+  void computeJacobians() override;
+
+ protected:
+  void writeParameters(std::ostream& out) const override { intrinsics_.write(out); }
+  void readParameters(std::istream& in) override { intrinsics_.read(in, kTypeTag); }
+
+ private:
+  PinholeIntrinsics intrinsics_;
+};
+
+}  // namespace lrsvo

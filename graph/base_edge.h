@@ -1,0 +1,248 @@
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <istream>
+#include <memory>
+#include <ostream>
+#include <tuple>
+#include <utility>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include "graph/edge.h"
+#include "graph/edge_io.h"
+#include "graph/error.h"
+#include "graph/robust_kernel.h"
+
+namespace lrsvo {
+
+// A least-squares edge with an R-dimensional residual over vertices Vs...
+// (each a BaseVertex<D>). Derived classes give computeResidual() and, for
+// speed, computeJacobians(); the default Jacobians are central differences.
+// The cost is 1/2 rho(r^T Omega r); blocks use whitened, kernel-weighted
+// Jacobians (IRLS: H = rho' J^T Omega J, g = rho' J^T Omega r).
+template <int R, typename... Vs>
+class BaseEdge : public Edge {
+ public:
+  static constexpr int kResidualDim = R;
+  static constexpr int kVertexCount = sizeof...(Vs);
+  using Residual = Eigen::Matrix<double, R, 1>;
+  using Information = Eigen::Matrix<double, R, R>;
+  template <int K>
+  using VertexType = std::tuple_element_t<K, std::tuple<Vs...>>;
+  template <int K>
+  using Jacobian = Eigen::Matrix<double, R, VertexType<K>::kDimension>;
+
+  BaseEdge() { vertices_.assign(kVertexCount, nullptr); }
+
+  int vertexCount() const final { return kVertexCount; }
+  bool acceptsVertex(int k, const Vertex& vertex) const final { return kAcceptTable[k](vertex); }
+
+  template <int K>
+  VertexType<K>* vertexAs() const {
+    return static_cast<VertexType<K>*>(vertices_[K]);
+  }
+
+  const Residual& measurement() const { return measurement_; }
+  void setMeasurement(const Residual& measurement) { measurement_ = measurement; }
+
+  const Information& information() const { return information_; }
+  // Throws unless the matrix is symmetric positive definite and finite.
+  void setInformation(const Information& information) {
+    if (!information.allFinite() || !information.isApprox(information.transpose()))
+      throw Error(std::string(typeTag()) + ": information matrix is not finite and symmetric");
+    Eigen::LLT<Information> llt(information);
+    if (llt.info() != Eigen::Success)
+      throw Error(std::string(typeTag()) + ": information matrix is not positive definite");
+    information_ = information;
+    sqrtInformation_ = llt.matrixU();
+    identityInformation_ = information.isIdentity(0.0);
+  }
+
+  const std::shared_ptr<RobustKernel>& robustKernel() const { return kernel_; }
+  void setRobustKernel(std::shared_ptr<RobustKernel> kernel) { kernel_ = std::move(kernel); }
+
+  // r = prediction - measurement (not whitened).
+  virtual void computeResidual(Residual& residual) const = 0;
+
+  // Fills jacobian<K>() = d r / d delta_K for every non-fixed vertex K.
+  virtual void computeJacobians() { computeNumericJacobians(); }
+
+  // Central differences through each vertex's oplus, on private copies of the
+  // vertices (safe while other edges are evaluated). The fallback, and the
+  // reference that tests check analytic Jacobians against.
+  void computeNumericJacobians() { numericJacobians(std::make_index_sequence<kVertexCount>{}); }
+
+  template <int K>
+  Jacobian<K>& jacobian() {
+    return std::get<K>(jacobians_);
+  }
+  template <int K>
+  const Jacobian<K>& jacobian() const {
+    return std::get<K>(jacobians_);
+  }
+
+  double cost() const override {
+    Residual r;
+    computeResidual(r);
+    return 0.5 * robustify(whiten(r).squaredNorm(), nullptr);
+  }
+
+  double linearize() override {
+    computeResidual(whitenedResidual_);
+    computeJacobians();
+    double weight = 1.0;
+    whitenedResidual_ = whiten(whitenedResidual_);
+    const double rho = robustify(whitenedResidual_.squaredNorm(), &weight);
+    // Fold sqrt(rho') and the square-root information into residual and
+    // Jacobians once, so each block is a plain J_a^T J_b.
+    const double scale = std::sqrt(weight);
+    whitenedResidual_ *= scale;
+    whitenJacobians(scale, std::make_index_sequence<kVertexCount>{});
+    return 0.5 * rho;
+  }
+
+  void addHessianBlock(int a, int b, double* block, int ld) const final {
+    kBlockTable[a][b](*this, block, ld);
+  }
+  void addGradient(int a, double* gradient) const final { kGradientTable[a](*this, gradient); }
+
+  void writeData(std::ostream& out) const override {
+    writeParameters(out);
+    writeVector(out, measurement_);
+    writeUpperTriangle(out, information_);
+    writeKernel(out, kernel_.get());
+  }
+  void readData(std::istream& in) override {
+    readParameters(in);
+    Residual z;
+    readVector(in, z, typeTag());
+    Information info;
+    readUpperTriangle(in, info, typeTag());
+    setMeasurement(z);
+    setInformation(info);
+    kernel_ = readKernel(in, typeTag());
+  }
+
+ protected:
+  // Edge-type data that precedes the measurement in graph files (intrinsics, ...).
+  virtual void writeParameters(std::ostream&) const {}
+  virtual void readParameters(std::istream&) {}
+
+  Residual measurement_ = Residual::Zero();
+
+ private:
+  using BlockFn = void (*)(const BaseEdge&, double*, int);
+  using GradientFn = void (*)(const BaseEdge&, double*);
+  using AcceptFn = bool (*)(const Vertex&);
+
+  template <int K>
+  static bool acceptImpl(const Vertex& vertex) {
+    return dynamic_cast<const VertexType<K>*>(&vertex) != nullptr;
+  }
+  template <std::size_t... K>
+  static constexpr std::array<AcceptFn, kVertexCount> acceptTable(std::index_sequence<K...>) {
+    return {&acceptImpl<static_cast<int>(K)>...};
+  }
+  static constexpr auto kAcceptTable = acceptTable(std::make_index_sequence<kVertexCount>{});
+
+  Residual whiten(const Residual& r) const {
+    return identityInformation_ ? r : Residual(sqrtInformation_ * r);
+  }
+
+  double robustify(double s, double* weight) const {
+    if (!kernel_) {
+      if (weight) *weight = 1.0;
+      return s;
+    }
+    double w = 1.0;
+    const double rho = kernel_->evaluate(s, &w);
+    if (weight) *weight = w;
+    return rho;
+  }
+
+  template <std::size_t... K>
+  void whitenJacobians(double scale, std::index_sequence<K...>) {
+    if (identityInformation_)
+      ((std::get<K>(jacobians_) *= scale), ...);
+    else
+      ((std::get<K>(jacobians_) = scale * sqrtInformation_ * std::get<K>(jacobians_)), ...);
+  }
+
+  template <std::size_t... K>
+  void numericJacobians(std::index_sequence<K...>) {
+    (numericJacobian<K>(), ...);
+  }
+
+  // Differentiates on a private copy of the vertex, so concurrent edges never
+  // see a perturbed shared vertex.
+  template <int K>
+  void numericJacobian() {
+    Vertex* original = vertices_[K];
+    if (original->fixed()) return;
+    constexpr int D = VertexType<K>::kDimension;
+    constexpr double kStep = 1e-6;
+    std::unique_ptr<Vertex> copy = original->clone();
+    Eigen::VectorXd start(copy->estimateSize());
+    copy->getEstimate(start.data());
+    vertices_[K] = copy.get();
+    Eigen::Matrix<double, D, 1> delta;
+    Residual plus, minus;
+    for (int d = 0; d < D; ++d) {
+      delta.setZero();
+      delta[d] = kStep;
+      copy->oplus(delta.data());
+      computeResidual(plus);
+      copy->setEstimate(start.data());
+      delta[d] = -kStep;
+      copy->oplus(delta.data());
+      computeResidual(minus);
+      copy->setEstimate(start.data());
+      std::get<K>(jacobians_).col(d) = (plus - minus) / (2.0 * kStep);
+    }
+    vertices_[K] = original;
+  }
+
+  template <int A, int B>
+  static void blockImpl(const BaseEdge& edge, double* block, int ld) {
+    using Block = Eigen::Matrix<double, VertexType<A>::kDimension, VertexType<B>::kDimension>;
+    Eigen::Map<Block, 0, Eigen::OuterStride<>> target(block, Block::RowsAtCompileTime,
+                                                      Block::ColsAtCompileTime, Eigen::OuterStride<>(ld));
+    // lazyProduct keeps small fixed-size blocks out of Eigen's large-matrix GEMM path.
+    target.noalias() += std::get<A>(edge.jacobians_).transpose().lazyProduct(std::get<B>(edge.jacobians_));
+  }
+
+  template <int A>
+  static void gradientImpl(const BaseEdge& edge, double* gradient) {
+    using Gradient = Eigen::Matrix<double, VertexType<A>::kDimension, 1>;
+    Eigen::Map<Gradient>(gradient).noalias() += std::get<A>(edge.jacobians_).transpose() * edge.whitenedResidual_;
+  }
+
+  template <int A, std::size_t... B>
+  static constexpr std::array<BlockFn, kVertexCount> blockRow(std::index_sequence<B...>) {
+    return {&blockImpl<A, static_cast<int>(B)>...};
+  }
+  template <std::size_t... A>
+  static constexpr std::array<std::array<BlockFn, kVertexCount>, kVertexCount> blockTable(
+      std::index_sequence<A...>) {
+    return {blockRow<static_cast<int>(A)>(std::make_index_sequence<kVertexCount>{})...};
+  }
+  template <std::size_t... A>
+  static constexpr std::array<GradientFn, kVertexCount> gradientTable(std::index_sequence<A...>) {
+    return {&gradientImpl<static_cast<int>(A)>...};
+  }
+
+  static constexpr auto kBlockTable = blockTable(std::make_index_sequence<kVertexCount>{});
+  static constexpr auto kGradientTable = gradientTable(std::make_index_sequence<kVertexCount>{});
+
+  Information information_ = Information::Identity();
+  Information sqrtInformation_ = Information::Identity();
+  bool identityInformation_ = true;
+  std::shared_ptr<RobustKernel> kernel_;
+  std::tuple<Eigen::Matrix<double, R, Vs::kDimension>...> jacobians_;
+  Residual whitenedResidual_ = Residual::Zero();
+};
+
+}  // namespace lrsvo

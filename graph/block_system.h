@@ -1,0 +1,93 @@
+#pragma once
+
+#include <cstddef>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "graph/graph.h"
+
+namespace lrsvo {
+
+// The normal equations H dx = -g of a graph in block form, one block per
+// pair of active (non-fixed) vertices that share an edge. Free vertices come
+// first (block indices [0, freeCount)), marginalised ones after. The structure
+// is built once per graph; fill() evaluates every edge and sums the blocks.
+class BlockSystem {
+ public:
+  struct Block {
+    int row;             // block index of the row vertex (row <= col)
+    int col;             // block index of the column vertex
+    std::size_t offset;  // start of the column-major row-dim x col-dim values
+  };
+
+  // schurOrdering: put marginalised vertices last (else treat all alike).
+  BlockSystem(const Graph& graph, bool schurOrdering);
+
+  int blockCount() const { return static_cast<int>(vertices_.size()); }
+  int freeCount() const { return freeCount_; }
+  int dim(int block) const { return dims_[block]; }
+  int offset(int block) const { return offsets_[block]; }
+  int scalarCount() const { return scalarCount_; }
+  int freeScalarCount() const { return blockCount() == freeCount_ ? scalarCount_ : offsets_[freeCount_]; }
+  Vertex* vertex(int block) const { return vertices_[block]; }
+  // Block index of a vertex, or -1 when it is fixed or on no edge.
+  int blockOf(const Vertex* vertex) const;
+
+  const std::vector<Block>& blocks() const { return blocks_; }
+  // Blocks of row r (columns >= r), sorted by column; the first is the diagonal.
+  const std::vector<int>& rowBlocks(int row) const { return rowBlocks_[row]; }
+  // Blocks of column c (rows <= c), sorted by row; the last is the diagonal.
+  const std::vector<int>& colBlocks(int col) const { return colBlocks_[col]; }
+  int diagonalBlock(int block) const { return rowBlocks_[block].front(); }
+  double* values(const Block& block) { return values_.data() + block.offset; }
+  const double* values(const Block& block) const { return values_.data() + block.offset; }
+
+  const Eigen::VectorXd& gradient() const { return gradient_; }
+  // Undamped diagonal of H.
+  const Eigen::VectorXd& diagonal() const { return diagonal_; }
+
+  // Linearises every edge, fills H and g; returns the total cost.
+  double fill(int threads);
+  // Total cost at the current estimates without derivatives.
+  double cost(int threads) const;
+  // Sets diag(H) = undamped diagonal + shift.
+  void setDiagonalShift(const Eigen::VectorXd& shift);
+  // Holds one coordinate of an active vertex: its row and column of H become
+  // those of the identity and its gradient zero, so every solve gives it a
+  // zero step (active-set methods). Undone by the next fill().
+  void holdCoordinate(int block, int coordinate);
+  // y = H x with the current (possibly shifted) blocks.
+  Eigen::VectorXd multiply(const Eigen::VectorXd& x) const;
+
+  // Applies x <- x [+] dx to every active vertex.
+  void applyStep(const Eigen::VectorXd& dx);
+  // Saves and restores all active vertex estimates (for rejected steps).
+  void saveEstimates();
+  void restoreEstimates();
+
+ private:
+  struct Contribution {
+    Edge* edge;
+    int a;  // the edge's local index of the row vertex
+    int b;  // the edge's local index of the column vertex
+  };
+
+  std::vector<Edge*> edges_;
+  std::vector<Vertex*> vertices_;
+  std::unordered_map<const Vertex*, int> blockIndex_;
+  std::vector<int> dims_, offsets_;
+  int freeCount_ = 0;
+  int scalarCount_ = 0;
+  std::vector<Block> blocks_;
+  std::vector<std::vector<int>> rowBlocks_, colBlocks_;
+  std::vector<std::vector<Contribution>> blockContributions_;
+  std::vector<std::vector<Contribution>> gradientContributions_;  // b unused
+  std::vector<double> values_;
+  Eigen::VectorXd gradient_, diagonal_;
+  std::vector<double> savedEstimates_;
+  std::vector<std::size_t> estimateOffsets_;
+};
+
+}  // namespace lrsvo

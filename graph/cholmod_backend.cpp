@@ -1,0 +1,96 @@
+#include "graph/cholmod_backend.h"
+
+#include <algorithm>
+
+#include "graph/error.h"
+
+namespace lrsvo {
+
+CholmodBackend::CholmodBackend() {
+  cholmod_start(&common_);
+  common_.print = 0;
+  common_.supernodal = CHOLMOD_SUPERNODAL;
+}
+
+CholmodBackend::~CholmodBackend() {
+  release();
+  cholmod_finish(&common_);
+}
+
+void CholmodBackend::release() {
+  if (factor_) cholmod_free_factor(&factor_, &common_);
+  if (matrix_) cholmod_free_sparse(&matrix_, &common_);
+}
+
+void CholmodBackend::analyze(const std::vector<int>& blockDims, const std::vector<std::pair<int, int>>& blockPairs) {
+  release();
+  const int blockCount = static_cast<int>(blockDims.size());
+  std::vector<int> offsets(blockCount + 1, 0);
+  for (int i = 0; i < blockCount; ++i) offsets[i + 1] = offsets[i] + blockDims[i];
+  const int n = offsets.back();
+
+  // Block rows of every block column, in row order, and where block k sits.
+  std::vector<std::vector<int>> columnPairs(blockCount);
+  for (int k = 0; k < static_cast<int>(blockPairs.size()); ++k) columnPairs[blockPairs[k].second].push_back(k);
+  std::vector<int> rowPosition(blockPairs.size()), columnLength(blockCount, 0);
+  std::size_t nnz = 0;
+  for (int c = 0; c < blockCount; ++c) {
+    auto& pairs = columnPairs[c];
+    std::sort(pairs.begin(), pairs.end(), [&](int a, int b) { return blockPairs[a].first < blockPairs[b].first; });
+    for (int k : pairs) {
+      rowPosition[k] = columnLength[c];
+      columnLength[c] += blockDims[blockPairs[k].first];
+    }
+    nnz += static_cast<std::size_t>(columnLength[c]) * blockDims[c];
+  }
+
+  matrix_ = cholmod_allocate_sparse(n, n, nnz, /*sorted=*/1, /*packed=*/1, /*stype=*/1, CHOLMOD_REAL, &common_);
+  if (!matrix_) throw Error("cholmod: cannot allocate a " + std::to_string(n) + "x" + std::to_string(n) + " matrix");
+  auto* colPtr = static_cast<int*>(matrix_->p);
+  auto* rowIdx = static_cast<int*>(matrix_->i);
+  auto* values = static_cast<double*>(matrix_->x);
+  int position = 0;
+  for (int c = 0; c < blockCount; ++c) {
+    for (int k = 0; k < blockDims[c]; ++k) {
+      colPtr[offsets[c] + k] = position;
+      for (int pair : columnPairs[c]) {
+        const int row = blockPairs[pair].first;
+        for (int r = 0; r < blockDims[row]; ++r) rowIdx[position++] = offsets[row] + r;
+      }
+    }
+  }
+  colPtr[n] = position;
+
+  blocks_.resize(blockPairs.size());
+  for (int k = 0; k < static_cast<int>(blockPairs.size()); ++k) {
+    const int c = blockPairs[k].second;
+    blocks_[k] = {values + colPtr[offsets[c]] + rowPosition[k], columnLength[c]};
+  }
+  setZero();
+  factor_ = cholmod_analyze(matrix_, &common_);
+  if (!factor_) throw Error("cholmod: symbolic analysis failed");
+}
+
+void CholmodBackend::setZero() {
+  std::fill_n(static_cast<double*>(matrix_->x), matrix_->nzmax, 0.0);
+}
+
+bool CholmodBackend::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
+  cholmod_factorize(matrix_, factor_, &common_);
+  if (common_.status == CHOLMOD_NOT_POSDEF || factor_->minor < factor_->n) return false;
+  cholmod_dense b;
+  b.nrow = b.d = rhs.size();
+  b.ncol = 1;
+  b.nzmax = rhs.size();
+  b.x = const_cast<double*>(rhs.data());
+  b.z = nullptr;
+  b.xtype = CHOLMOD_REAL;
+  b.dtype = CHOLMOD_DOUBLE;
+  cholmod_dense* solution = cholmod_solve(CHOLMOD_A, factor_, &b, &common_);
+  if (!solution) return false;
+  x = Eigen::Map<const Eigen::VectorXd>(static_cast<double*>(solution->x), rhs.size());
+  cholmod_free_dense(&solution, &common_);
+  return x.allFinite();
+}
+
+}  // namespace lrsvo

@@ -1,0 +1,27 @@
+#include "graph/dense_backend.h"
+
+#include <Eigen/Cholesky>
+
+namespace lrsvo {
+
+void DenseBackend::analyze(const std::vector<int>& blockDims, const std::vector<std::pair<int, int>>& blockPairs) {
+  offsets_.assign(blockDims.size() + 1, 0);
+  for (std::size_t i = 0; i < blockDims.size(); ++i) offsets_[i + 1] = offsets_[i] + blockDims[i];
+  matrix_.setZero(offsets_.back(), offsets_.back());
+  pairs_ = blockPairs;
+}
+
+SymmetricBackend::BlockRef DenseBackend::block(int k) {
+  const auto [row, col] = pairs_[k];
+  return {matrix_.data() + offsets_[row] + static_cast<Eigen::Index>(offsets_[col]) * matrix_.rows(),
+          static_cast<int>(matrix_.rows())};
+}
+
+bool DenseBackend::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
+  Eigen::LLT<Eigen::MatrixXd, Eigen::Upper> llt(matrix_);
+  if (llt.info() != Eigen::Success) return false;
+  x = llt.solve(rhs);
+  return x.allFinite();
+}
+
+}  // namespace lrsvo

@@ -1,0 +1,48 @@
+#pragma once
+
+#include <iosfwd>
+#include <vector>
+
+#include "graph/vertex.h"
+
+namespace lrsvo {
+
+// A term of the objective joining any number of vertices. The optimiser only
+// sees this interface: after linearize() an edge hands out its gradient and
+// Gauss-Newton (or exact) Hessian blocks per vertex, so least-squares edges and
+// cost edges (barriers, priors with their own Hessian) enter the same system.
+class Edge {
+ public:
+  virtual ~Edge() = default;
+
+  virtual int vertexCount() const = 0;
+  Vertex* vertex(int k) const { return vertices_[k]; }
+  const std::vector<Vertex*>& vertices() const { return vertices_; }
+  void setVertex(int k, Vertex* vertex) { vertices_.at(k) = vertex; }
+
+  // Tag naming the type in graph files; the type registers under it.
+  virtual const char* typeTag() const = 0;
+  // Whether slot k may hold this vertex (its type is the one the edge reads).
+  // Graph::addEdge refuses an edge whose vertices it does not accept.
+  virtual bool acceptsVertex(int k, const Vertex& vertex) const = 0;
+
+  // The edge's term of the objective at the current estimates, Ceres'
+  // convention 1/2 rho(||r||^2) for least squares; +inf when infeasible.
+  virtual double cost() const = 0;
+  // Evaluates and caches what the blocks need; returns cost().
+  virtual double linearize() = 0;
+  // After linearize(): block += d2F / (d vertex a, d vertex b), a dim(a) x dim(b)
+  // column-major block with leading dimension ld.
+  virtual void addHessianBlock(int a, int b, double* block, int ld) const = 0;
+  // After linearize(): gradient += dF / d vertex a.
+  virtual void addGradient(int a, double* gradient) const = 0;
+  // Type-specific data in graph files (measurement, information, kernel, ...).
+  virtual void writeData(std::ostream& out) const = 0;
+  // Throws lrsvo::Error on missing or invalid values.
+  virtual void readData(std::istream& in) = 0;
+
+ protected:
+  std::vector<Vertex*> vertices_;
+};
+
+}  // namespace lrsvo

@@ -1,0 +1,57 @@
+#include "graph/graph.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "graph/error.h"
+
+namespace lrsvo {
+
+void Graph::insertVertex(std::unique_ptr<Vertex> vertex) {
+  if (!vertex) throw Error("addVertex: null vertex");
+  const int id = vertex->id();
+  if (!byId_.emplace(id, vertex.get()).second)
+    throw Error("addVertex: duplicate vertex id " + std::to_string(id));
+  vertices_.push_back(std::move(vertex));
+}
+
+void Graph::insertEdge(std::unique_ptr<Edge> edge) {
+  if (!edge) throw Error("addEdge: null edge");
+  for (int k = 0; k < edge->vertexCount(); ++k) {
+    const Vertex* v = edge->vertex(k);
+    const std::string where = std::string("addEdge ") + edge->typeTag() + ": vertex slot " + std::to_string(k);
+    if (!v) throw Error(where + " is empty");
+    if (vertex(v->id()) != v) throw Error(where + " names vertex " + std::to_string(v->id()) + ", not in the graph");
+    if (!edge->acceptsVertex(k, *v))
+      throw Error(where + " cannot hold vertex " + std::to_string(v->id()) + " of type " + v->typeTag());
+  }
+  edges_.push_back(std::move(edge));
+}
+
+void Graph::removeVertex(int id) {
+  Vertex* target = vertex(id);
+  if (!target) throw Error("removeVertex: no vertex " + std::to_string(id));
+  std::erase_if(edges_, [&](const std::unique_ptr<Edge>& e) {
+    return std::find(e->vertices().begin(), e->vertices().end(), target) != e->vertices().end();
+  });
+  byId_.erase(id);
+  std::erase_if(vertices_, [&](const std::unique_ptr<Vertex>& v) { return v.get() == target; });
+}
+
+void Graph::removeEdge(const Edge* edge) {
+  std::erase_if(edges_, [&](const std::unique_ptr<Edge>& e) { return e.get() == edge; });
+}
+
+Vertex* Graph::vertex(int id) const {
+  auto it = byId_.find(id);
+  return it == byId_.end() ? nullptr : it->second;
+}
+
+double Graph::cost() const {
+  double total = 0.0;
+  for (const auto& edge : edges_) total += edge->cost();
+  return total;
+}
+
+}  // namespace lrsvo

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include "graph/block_system.h"
+
+namespace lrsvo {
+
+// Seconds spent in a linear solver's phases, summed over its solves.
+struct LinearSolverTimes {
+  double schurSeconds = 0.0;      // eliminating marginalised blocks and back-substitution
+  double factorizeSeconds = 0.0;  // factorising and solving the (reduced) system
+};
+
+// Solves H x = rhs for the block system. Registered by name in
+// Registry<LinearSolver>: "dense", "cholmod", "schur_dense", "schur_cholmod".
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  // True when the solver eliminates marginalised vertices (needs them ordered last).
+  virtual bool usesSchurOrdering() const = 0;
+  // Prepares for systems of this structure (symbolic analysis); once per structure.
+  virtual void analyze(const BlockSystem& system) = 0;
+  // Returns false when H is not positive definite (x is then undefined).
+  virtual bool solve(const BlockSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) = 0;
+
+  const LinearSolverTimes& times() const { return times_; }
+
+ protected:
+  LinearSolverTimes times_;
+};
+
+}  // namespace lrsvo

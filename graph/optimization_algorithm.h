@@ -1,0 +1,66 @@
+#pragma once
+
+#include <chrono>
+
+#include "graph/block_system.h"
+#include "graph/constraint_handler.h"
+#include "graph/linear_solver.h"
+#include "graph/solver_options.h"
+#include "graph/solver_summary.h"
+
+namespace lrsvo {
+
+// Everything an algorithm needs for one solve, with the timed operations
+// shared by all algorithms.
+class OptimizationContext {
+ public:
+  OptimizationContext(BlockSystem& system, LinearSolver& solver, ConstraintHandler& constraints,
+                      const SolverOptions& options, SolverSummary& summary);
+
+  BlockSystem& system() { return system_; }
+  const SolverOptions& options() const { return options_; }
+  SolverSummary& summary() { return summary_; }
+  ConstraintHandler& constraints() { return constraints_; }
+
+  // Fills H and g at the current estimates and applies the constraints.
+  double linearize();
+  // Solves (H + diag(shift)) dx = -g, then lets the constraints shape dx;
+  // false when the system is not positive definite.
+  bool solveStep(const Eigen::VectorXd& shift, Eigen::VectorXd& dx);
+  // Decrease of the quadratic model, -g^T dx - 1/2 dx^T H dx, for the step
+  // of the last solveStep().
+  double predictedDecrease(const Eigen::VectorXd& shift, const Eigen::VectorXd& dx) const;
+  // Applies x <- x [+] dx to the active vertices (estimates saved first, so
+  // rejectStep() restores them).
+  void applyStep(const Eigen::VectorXd& dx);
+  void rejectStep() { system_.restoreEstimates(); }
+  // Cost at the current estimates.
+  double cost();
+  // Norm of all active estimates, for the parameter tolerance.
+  double estimateNorm() const;
+  double elapsedSeconds() const;
+  bool outOfTime() const { return elapsedSeconds() >= options_.maxSeconds; }
+  // Appends an iteration record (timing filled in) and prints it when verbose.
+  void record(IterationRecord record);
+
+ private:
+  BlockSystem& system_;
+  LinearSolver& solver_;
+  ConstraintHandler& constraints_;
+  const SolverOptions& options_;
+  SolverSummary& summary_;
+  std::chrono::steady_clock::time_point start_;
+  double lastRecordSeconds_ = 0.0;
+  bool stepAdjusted_ = false;
+};
+
+// A minimisation loop over the block system, registered by name in
+// Registry<OptimizationAlgorithm> ("lm", "gn").
+class OptimizationAlgorithm {
+ public:
+  virtual ~OptimizationAlgorithm() = default;
+  // Runs from the current estimates; fills iterations, final cost, termination.
+  virtual void run(OptimizationContext& context) = 0;
+};
+
+}  // namespace lrsvo

@@ -1,0 +1,88 @@
+#include "graph/optimization_algorithm.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace lrsvo {
+
+using Clock = std::chrono::steady_clock;
+
+namespace {
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+}  // namespace
+
+OptimizationContext::OptimizationContext(BlockSystem& system, LinearSolver& solver, ConstraintHandler& constraints,
+                                         const SolverOptions& options, SolverSummary& summary)
+    : system_(system),
+      solver_(solver),
+      constraints_(constraints),
+      options_(options),
+      summary_(summary),
+      start_(Clock::now()) {}
+
+double OptimizationContext::linearize() {
+  const auto start = Clock::now();
+  const double cost = system_.fill(options_.threads);
+  constraints_.constrainSystem(system_);
+  summary_.linearizeSeconds += secondsSince(start);
+  return cost;
+}
+
+bool OptimizationContext::solveStep(const Eigen::VectorXd& shift, Eigen::VectorXd& dx) {
+  system_.setDiagonalShift(shift);
+  const Eigen::VectorXd rhs = -system_.gradient();
+  const bool ok = solver_.solve(system_, rhs, dx, options_.threads);
+  summary_.schurSeconds = solver_.times().schurSeconds;
+  summary_.factorizeSeconds = solver_.times().factorizeSeconds;
+  stepAdjusted_ = ok && constraints_.adjustStep(system_, dx);
+  return ok;
+}
+
+double OptimizationContext::predictedDecrease(const Eigen::VectorXd& shift, const Eigen::VectorXd& dx) const {
+  const double linear = -system_.gradient().dot(dx);
+  const double damping = dx.dot(shift.cwiseProduct(dx));
+  // Unchanged steps solve (H + D) dx = -g, so dx^T H dx = -g^T dx - dx^T D dx;
+  // the blocks hold H + D, so adjusted steps take dx^T (H + D) dx - dx^T D dx.
+  if (!stepAdjusted_) return 0.5 * (linear + damping);
+  return linear - 0.5 * (dx.dot(system_.multiply(dx)) - damping);
+}
+
+void OptimizationContext::applyStep(const Eigen::VectorXd& dx) {
+  system_.saveEstimates();
+  system_.applyStep(dx);
+  constraints_.afterStep(system_);
+}
+
+double OptimizationContext::cost() {
+  const auto start = Clock::now();
+  const double value = system_.cost(options_.threads);
+  summary_.costSeconds += secondsSince(start);
+  return value;
+}
+
+double OptimizationContext::estimateNorm() const {
+  double squared = 0.0;
+  std::vector<double> values;
+  for (int i = 0; i < system_.blockCount(); ++i) {
+    const Vertex* v = system_.vertex(i);
+    values.resize(v->estimateSize());
+    v->getEstimate(values.data());
+    for (double x : values) squared += x * x;
+  }
+  return std::sqrt(squared);
+}
+
+double OptimizationContext::elapsedSeconds() const { return secondsSince(start_); }
+
+void OptimizationContext::record(IterationRecord record) {
+  record.cumulativeSeconds = elapsedSeconds();
+  record.iterationSeconds = record.cumulativeSeconds - lastRecordSeconds_;
+  lastRecordSeconds_ = record.cumulativeSeconds;
+  if (options_.verbose)
+    std::fprintf(stderr, "%4d cost %.6e change %10.3e |g| %9.2e |dx| %9.2e lambda %9.2e %s %.3fs\n",
+                 record.iteration, record.cost, record.costChange, record.gradientMaxNorm, record.stepNorm,
+                 record.lambda, record.accepted ? "accepted" : "rejected", record.cumulativeSeconds);
+  summary_.iterations.push_back(record);
+}
+
+}  // namespace lrsvo

@@ -1,0 +1,104 @@
+#include "graph/optimizer.h"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "graph/error.h"
+#include "graph/optimization_algorithm.h"
+#include "graph/registry.h"
+
+namespace lrsvo {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void checkEstimatesFinite(const Graph& graph) {
+  std::vector<double> values;
+  for (const auto& v : graph.vertices()) {
+    values.resize(v->estimateSize());
+    v->getEstimate(values.data());
+    for (double x : values)
+      if (!std::isfinite(x))
+        throw Error(std::string("vertex ") + std::to_string(v->id()) + " (" + v->typeTag() +
+                    ") has a non-finite estimate");
+  }
+}
+
+[[noreturn]] void throwNonFiniteCost(const Graph& graph) {
+  for (const auto& edge : graph.edges()) {
+    if (std::isfinite(edge->cost())) continue;
+    std::string ids;
+    for (const Vertex* v : edge->vertices()) ids.append(" ").append(std::to_string(v->id()));
+    throw Error(std::string("the start cost is not finite: edge ") + edge->typeTag() + " on vertices" + ids +
+                " gives " + std::to_string(edge->cost()));
+  }
+  throw Error("the start cost is not finite");
+}
+
+// Calls ConstraintHandler::end however the solve leaves.
+struct ConstraintScope {
+  ConstraintHandler& handler;
+  Graph& graph;
+  ConstraintScope(ConstraintHandler& h, Graph& g) : handler(h), graph(g) { handler.begin(graph); }
+  ~ConstraintScope() { handler.end(graph); }
+  ConstraintScope(const ConstraintScope&) = delete;
+  ConstraintScope& operator=(const ConstraintScope&) = delete;
+};
+
+}  // namespace
+
+SolverOptions SolverOptions::fromName(const std::string& name) {
+  SolverOptions options;
+  const auto split = name.find('_');
+  if (split == std::string::npos) throw Error("solver name '" + name + "' is not <algorithm>_<linear solver>");
+  options.algorithm = name.substr(0, split);
+  options.linearSolver = name.substr(split + 1);
+  if (!Registry<OptimizationAlgorithm>::instance().contains(options.algorithm))
+    Registry<OptimizationAlgorithm>::instance().create(options.algorithm);  // throws, listing known names
+  if (!Registry<LinearSolver>::instance().contains(options.linearSolver))
+    Registry<LinearSolver>::instance().create(options.linearSolver);
+  return options;
+}
+
+Optimizer::Optimizer(SolverOptions options) : options_(std::move(options)) {
+  if (options_.threads < 1) throw Error("solver: threads must be at least 1");
+  if (options_.maxIterations < 0) throw Error("solver: max iterations must not be negative");
+}
+
+SolverSummary Optimizer::optimize(Graph& graph) const {
+  ConstraintHandler unconstrained;
+  return optimize(graph, unconstrained);
+}
+
+SolverSummary Optimizer::optimize(Graph& graph, ConstraintHandler& constraints) const {
+  const auto start = Clock::now();
+  if (graph.empty()) throw Error("optimise: the graph has no vertices");
+  checkEstimatesFinite(graph);
+  auto algorithm = Registry<OptimizationAlgorithm>::instance().create(options_.algorithm);
+  auto solver = Registry<LinearSolver>::instance().create(options_.linearSolver);
+
+  ConstraintScope scope(constraints, graph);
+  BlockSystem system(graph, solver->usesSchurOrdering());
+  solver->analyze(system);
+
+  SolverSummary summary;
+  summary.solver = options_.name();
+  summary.threads = options_.threads;
+  summary.vertexCount = system.blockCount();
+  summary.edgeCount = static_cast<int>(graph.edges().size());
+  summary.parameterCount = system.scalarCount();
+  summary.initialCost = system.cost(options_.threads);
+  if (!std::isfinite(summary.initialCost)) throwNonFiniteCost(graph);
+  summary.setupSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+  OptimizationContext context(system, *solver, constraints, options_, summary);
+  context.record(IterationRecord{.iteration = 0, .cost = summary.initialCost, .lambda = 0.0});
+  algorithm->run(context);
+  summary.totalSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return summary;
+}
+
+}  // namespace lrsvo

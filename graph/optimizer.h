@@ -1,0 +1,29 @@
+#pragma once
+
+#include "graph/constraint_handler.h"
+#include "graph/graph.h"
+#include "graph/solver_options.h"
+#include "graph/solver_summary.h"
+
+namespace lrsvo {
+
+// Minimises a graph's cost with the algorithm and linear solver named in the
+// options, under an optional constraint method.
+class Optimizer {
+ public:
+  explicit Optimizer(SolverOptions options = {});
+
+  const SolverOptions& options() const { return options_; }
+
+  // Optimises the non-fixed vertices in place. Throws lrsvo::Error on bad
+  // input: an empty graph, non-finite estimates or start cost (naming the
+  // vertex or edge), unknown solver names.
+  SolverSummary optimize(Graph& graph) const;
+  // The same under a constraint method's hooks (see constraints/).
+  SolverSummary optimize(Graph& graph, ConstraintHandler& constraints) const;
+
+ private:
+  SolverOptions options_;
+};
+
+}  // namespace lrsvo

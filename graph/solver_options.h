@@ -1,0 +1,35 @@
+#pragma once
+
+#include <limits>
+#include <string>
+
+namespace lrsvo {
+
+// How LM damps the normal equations.
+enum class Damping {
+  kMultiplicative,  // diag(H) * (1 + lambda), the paper's (and Ceres' default) form
+  kAdditive,        // diag(H) + lambda
+};
+
+struct SolverOptions {
+  std::string algorithm = "lm";               // Registry<OptimizationAlgorithm> name
+  std::string linearSolver = "schur_cholmod";  // Registry<LinearSolver> name
+  Damping damping = Damping::kMultiplicative;
+  // Starting lambda; a negative value picks the default (1e-4 multiplicative,
+  // 1e-4 * max diag(H) additive).
+  double initialLambda = -1.0;
+  int maxIterations = 50;
+  double functionTolerance = 1e-6;   // stop when |dF| / F <= this after a step
+  double gradientTolerance = 1e-10;  // stop when max |projected gradient| <= this
+  double parameterTolerance = 1e-8;  // stop when |dx| <= this * (|x| + this)
+  double maxSeconds = std::numeric_limits<double>::infinity();
+  int threads = 1;
+  bool verbose = false;  // one line per iteration on stderr
+
+  // "<algorithm>_<linear solver>", e.g. "lm_schur_cholmod", "gn_dense".
+  // Throws lrsvo::Error when either part is not registered.
+  static SolverOptions fromName(const std::string& name);
+  std::string name() const { return algorithm + "_" + linearSolver; }
+};
+
+}  // namespace lrsvo

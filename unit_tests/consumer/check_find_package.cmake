@@ -1,0 +1,45 @@
+# The consumer_find_package test, run as `cmake -D... -P check_find_package.cmake`:
+# installs lrsvo from its build tree into a scratch prefix, then configures, builds
+# and runs the consumer project against that prefix, as a user of the package would.
+# Needs LRSVO_BUILD_DIR (a complete build), CONFIG, WORK_DIR, CONSUMER_SOURCE_DIR,
+# GENERATOR and CXX_COMPILER.
+foreach(var LRSVO_BUILD_DIR CONFIG WORK_DIR CONSUMER_SOURCE_DIR GENERATOR CXX_COMPILER)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "consumer test: ${var} is not set")
+  endif()
+endforeach()
+
+set(prefix "${WORK_DIR}/prefix")
+set(consumer_build "${WORK_DIR}/build")
+# Start from nothing each run, so that no file a previous build installed (or a
+# cached path) can hide a packaging error.
+file(REMOVE_RECURSE "${prefix}" "${consumer_build}")
+set(config_args "")
+if(CONFIG)
+  set(config_args --config "${CONFIG}")
+endif()
+
+function(run step)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE result)
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "consumer test: ${step} failed (${result})")
+  endif()
+endfunction()
+
+run("installing lrsvo into ${prefix} (is the build in ${LRSVO_BUILD_DIR} complete?)"
+  "${CMAKE_COMMAND}" --install "${LRSVO_BUILD_DIR}" ${config_args} --prefix "${prefix}")
+run("configuring the consumer against ${prefix}"
+  "${CMAKE_COMMAND}" -S "${CONSUMER_SOURCE_DIR}" -B "${consumer_build}" -G "${GENERATOR}"
+  "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" "-DCMAKE_BUILD_TYPE=${CONFIG}" "-DCMAKE_PREFIX_PATH=${prefix}"
+  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+
+# The package must come from the scratch prefix, not from another installed copy.
+file(STRINGS "${consumer_build}/CMakeCache.txt" found_dir REGEX "^lrsvo_DIR:")
+string(REGEX REPLACE "^lrsvo_DIR:[A-Z]*=" "" found_dir "${found_dir}")
+cmake_path(IS_PREFIX prefix "${found_dir}" NORMALIZE from_prefix)
+if(NOT from_prefix)
+  message(FATAL_ERROR "consumer test: lrsvo was found in '${found_dir}', not under '${prefix}'")
+endif()
+
+run("building the consumer" "${CMAKE_COMMAND}" --build "${consumer_build}" ${config_args})
+run("running the consumer" "${consumer_build}/lrsvo_consumer")

@@ -1,0 +1,28 @@
+#pragma once
+
+#include "graph/vertex.h"
+
+namespace lrsvo {
+
+// The transform of a secondary camera relative to the base camera, shared by
+// every pose of a window: s = (x, y, z, roll, pitch, yaw), where (x, y, z) = c
+// is the secondary camera's centre in the base camera frame and
+// R_s = Rz(yaw) Ry(pitch) Rx(roll) rotates base-frame vectors into the
+// secondary frame: X_c1 = R_s (X_c0 - c). Euclidean, so each of the six
+// numbers can carry bounds (method.md: bounding c, not t_s = -R_s c).
+class VertexStereoExtrinsic : public VectorVertex<6> {
+ public:
+  static constexpr const char* kTypeTag = "STEREO_EXTRINSIC";
+  using Vector6 = Eigen::Matrix<double, 6, 1>;
+  explicit VertexStereoExtrinsic(int id = -1, const Vector6& parameters = Vector6::Zero());
+
+  Eigen::Vector3d centre() const { return estimate_.head<3>(); }
+  Eigen::Matrix3d rotation() const;
+  const char* typeTag() const override { return kTypeTag; }
+  std::unique_ptr<Vertex> clone() const override { return std::make_unique<VertexStereoExtrinsic>(*this); }
+};
+
+// Rz(yaw) Ry(pitch) Rx(roll).
+Eigen::Matrix3d rotationFromRollPitchYaw(double roll, double pitch, double yaw);
+
+}  // namespace lrsvo
