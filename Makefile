@@ -43,13 +43,18 @@ demo: build
 	$(BUILD_DIR)/bin/lrsvo demo
 
 # Any sanitizer report fails the test that triggers it; the variables also reach the
-# test discovery that runs during the build.
+# test discovery that runs during the build. With ASan + UBSan on Eigen code, g++'s -O2 -g
+# compiles 5-8 times slower than a Release build (variable tracking for -g is most of it), so
+# RelWithDebInfo here means -O1 with line tables: stack traces keep file and line, and the
+# build fits the CI budget. The packaging test is left to `make test`.
+SANITIZE_OPTIONS := -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLRSVO_SANITIZE=ON -DLRSVO_BUILD_BENCHMARKS=OFF \
+  '-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG'
 sanitize: export ASAN_OPTIONS := detect_leaks=1
 sanitize: export UBSAN_OPTIONS := print_stacktrace=1:halt_on_error=1
 sanitize: deps
-	$(call configure,$(ASAN_DIR),-DCMAKE_BUILD_TYPE=RelWithDebInfo -DLRSVO_SANITIZE=ON -DLRSVO_BUILD_BENCHMARKS=OFF)
+	$(call configure,$(ASAN_DIR),$(SANITIZE_OPTIONS))
 	cmake --build $(ASAN_DIR) -j $(JOBS)
-	cd $(ASAN_DIR) && $(CTEST)
+	cd $(ASAN_DIR) && $(CTEST) -E '^consumer_find_package$$'
 
 format:
 	@bash scripts/install_deps.sh clang-format

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "apps/command.h"
+#include "constraints/constraint_method.h"
 #include "graph/edge.h"
 #include "graph/linear_solver.h"
 #include "graph/optimization_algorithm.h"
@@ -46,6 +47,7 @@ void listAll() {
   printRegistry<LinearSolver>("Linear solvers:");
   printSolverNames();
   std::printf("\n");
+  printRegistry<ConstraintMethod>("Constraint methods (bounds on parameters):");
   printRegistry<RobustKernel>("Robust kernels (--kernel):");
   printRegistry<Vertex>("Vertex types (graph file tags):");
   printRegistry<Edge>("Edge types (graph file tags):");

@@ -35,7 +35,7 @@ struct ConstraintSettings {
 
 // A way of keeping a graph's bounded parameters inside their box, chosen by
 // name from Registry<ConstraintMethod>: "none", "log_barrier",
-// "gradient_projection", "nlopt_lbfgs", "nlopt_mma", "nlopt_slsqp". Swapping
+// "gradient_projection", "nlopt_lbfgs", "nlopt_mma". Swapping
 // the method touches no graph, vertex or edge code.
 class ConstraintMethod : public ConstraintHandler {
  public:

@@ -18,9 +18,9 @@ class LogBarrier : public ConstraintMethod {
     const double initialCost = graph.cost();
     SolverSummary total;
     mu_ = settings_.barrierMu;
-    for (int round = 0; round < std::max(1, settings_.barrierRounds); ++round, mu_ *= settings_.barrierDecrease) {
+    for (round_ = 0; round_ < std::max(1, settings_.barrierRounds); ++round_, mu_ *= settings_.barrierDecrease) {
       const SolverSummary part = ConstraintMethod::solve(graph, options);
-      if (round == 0)
+      if (round_ == 0)
         total = part;
       else
         appendSummary(total, part);
@@ -31,7 +31,9 @@ class LogBarrier : public ConstraintMethod {
   }
 
   void begin(Graph& graph) override {
-    enforceStart(true);
+    // Later rounds start from the previous round's iterate, strictly inside
+    // because its barrier cost was finite, however close to a bound.
+    if (round_ == 0) enforceStart(true);
     for (const Bounds::Bound& bound : bounds_.all()) {
       if (bound.vertex->fixed()) continue;
       edges_.push_back(graph.addEdge(std::make_unique<BarrierEdge>(bound.vertex, bound.index, bound.lower,
@@ -46,6 +48,7 @@ class LogBarrier : public ConstraintMethod {
 
  private:
   double mu_ = 0.0;
+  int round_ = 0;
   std::vector<const Edge*> edges_;
 };
 

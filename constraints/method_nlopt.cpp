@@ -139,7 +139,6 @@ struct NloptRegistrar {
 const NloptRegistrar kLbfgs("nlopt_lbfgs", nlopt::LD_LBFGS,
                             "NLopt L-BFGS with bounds on the graph's analytic gradient (small graphs, test oracle)");
 const NloptRegistrar kMma("nlopt_mma", nlopt::LD_MMA, "NLopt MMA (method of moving asymptotes) with bounds");
-const NloptRegistrar kSlsqp("nlopt_slsqp", nlopt::LD_SLSQP, "NLopt SLSQP (sequential quadratic programming) with bounds");
 
 }  // namespace
 }  // namespace lrsvo

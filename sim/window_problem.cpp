@@ -119,12 +119,12 @@ class Simulator {
     if (inBase.z() <= 0.0 || inSecondary.z() <= 0.0) return false;
     *base = intrinsics_.project(inBase);
     *secondary = intrinsics_.project(inSecondary);
-    return insideImage(*base) && insideImage(*secondary);
+    return insideImage(*base, o_.imageMargin_px) && insideImage(*secondary, o_.imageMargin_px);
   }
 
-  bool insideImage(const Eigen::Vector2d& pixel) const {
-    const double m = o_.imageMargin_px;
-    return pixel.x() >= m && pixel.x() <= o_.imageWidth - m && pixel.y() >= m && pixel.y() <= o_.imageHeight - m;
+  bool insideImage(const Eigen::Vector2d& pixel, double margin) const {
+    return pixel.x() >= margin && pixel.x() <= o_.imageWidth - margin && pixel.y() >= margin &&
+           pixel.y() <= o_.imageHeight - margin;
   }
 
   // Half the ground footprint along x (flight) and y at the highest terrain, nominal attitude.
@@ -202,7 +202,13 @@ class Simulator {
 
   template <typename EdgeType>
   void addEdge(WindowProblem& problem, std::unique_ptr<EdgeType> edge, const Eigen::Vector2d& truth) {
-    edge->setMeasurement(truth + Eigen::Vector2d(normal(o_.pixelNoise), normal(o_.pixelNoise)));
+    // Noise is redrawn in the (at 1 px noise and a 10 px margin, never seen)
+    // case that it pushes a measurement out of the image.
+    Eigen::Vector2d measurement;
+    do {
+      measurement = truth + Eigen::Vector2d(normal(o_.pixelNoise), normal(o_.pixelNoise));
+    } while (!insideImage(measurement, 0.0));
+    edge->setMeasurement(measurement);
     edge->setInformation(Eigen::Matrix2d::Identity() / (o_.measurementSigma * o_.measurementSigma));
     if (!o_.robustKernel.empty()) edge->setRobustKernel(makeRobustKernel(o_.robustKernel, o_.robustKernelDelta));
     problem.graph.addEdge(std::move(edge));

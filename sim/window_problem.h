@@ -62,7 +62,9 @@ struct WindowProblemOptions {
   bool withScale = false;
   double startScale = 1.0;
   // The first poses are held at their (scaled) truth to fix the gauge; at
-  // least two when withScale, as the map's unit is then free.
+  // least two when withScale, as the map's unit is then free. With one, the
+  // map's scale and the extrinsic centre c still share a gauge freedom
+  // (scaling both changes no projection) that only c's bounds limit.
   int fixedPoses = 1;
 
   std::string robustKernel;  // "" for none, else a registered kernel name

@@ -27,7 +27,7 @@ ToyOptions noisyProblem(std::uint64_t seed, const std::string& kernel = "") {
   options.outlierFraction = kernel.empty() ? 0.0 : 0.15;
   options.randomInformation = true;
   options.kernel = kernel;
-  options.kernelDelta = 10.0;  // pixels: the start's errors are inliers, the outliers not
+  options.kernelDelta = 10.0;  // pixels; the 30-pixel outliers lie beyond it
   return options;
 }
 
@@ -57,8 +57,8 @@ TEST(Optimizer, LevenbergMarquardtNeverRaisesTheCost) {
         Graph graph = makeToyProblem(noisyProblem(seed, kernel));
         SolverOptions options;
         options.damping = damping;
-        // A large start lambda in additive form, a tiny one in multiplicative,
-        // so both over- and under-damped steps (rejections) occur.
+        // Tiny start lambdas: over-long steps are tried and rejected, which
+        // exercises restoring the estimates.
         options.initialLambda = damping == Damping::kAdditive ? 1e-6 : 1e-8;
         const SolverSummary summary = Optimizer(options).optimize(graph);
         SCOPED_TRACE(std::string("seed ") + std::to_string(seed) + ", kernel '" + kernel + "', " +

@@ -4,13 +4,13 @@
 #include <string>
 #include <utility>
 
-#include <Eigen/Cholesky>
 #include <ceres/autodiff_cost_function.h>
 #include <ceres/loss_function.h>
 #include <ceres/manifold.h>
 #include <ceres/ordered_groups.h>
 #include <ceres/product_manifold.h>
 #include <ceres/rotation.h>
+#include <Eigen/Cholesky>
 
 #include "apps/bench/ceres_solve.h"
 #include "edges/edge_project_base.h"
@@ -66,9 +66,9 @@ void pointInSecondary(const T* inBase, const T* s, const T& kappa, T* inSecondar
   using std::sin;
   const T x = inBase[0] - s[0] / kappa, y = inBase[1] - s[1] / kappa, z = inBase[2] - s[2] / kappa;
   const T cr = cos(s[3]), sr = sin(s[3]), cp = cos(s[4]), sp = sin(s[4]), cy = cos(s[5]), sy = sin(s[5]);
-  const T y1 = cr * y - sr * z, z1 = sr * y + cr * z;  // Rx(roll)
+  const T y1 = cr * y - sr * z, z1 = sr * y + cr * z;     // Rx(roll)
   const T x2 = cp * x + sp * z1, z2 = -sp * x + cp * z1;  // Ry(pitch)
-  inSecondary[0] = cy * x2 - sy * y1;                      // Rz(yaw)
+  inSecondary[0] = cy * x2 - sy * y1;                     // Rz(yaw)
   inSecondary[1] = sy * x2 + cy * y1;
   inSecondary[2] = z2;
 }
@@ -131,11 +131,6 @@ ceres::LossFunction* lossFor(const RobustKernel* kernel) {
   throw Error("Ceres model: no Ceres loss for the robust kernel '" + name + "'");
 }
 
-bool isModelledVertex(const Vertex& vertex) {
-  return dynamic_cast<const VertexPose*>(&vertex) || dynamic_cast<const VertexPoint3*>(&vertex) ||
-         dynamic_cast<const VertexStereoExtrinsic*>(&vertex) || dynamic_cast<const VertexScale*>(&vertex);
-}
-
 }  // namespace
 
 CeresStereoModel::CeresStereoModel(const Graph& graph, const Bounds& bounds) {
@@ -161,11 +156,9 @@ CeresStereoModel::CeresStereoModel(const Graph& graph, const Bounds& bounds) {
 double* CeresStereoModel::block(const Vertex* vertex) {
   const auto [entry, inserted] = blockIndex_.emplace(vertex, static_cast<int>(blocks_.size()));
   if (inserted) {
-    if (!isModelledVertex(*vertex))
-      throw Error(std::string("Ceres model: vertex type ") + vertex->typeTag() + " (vertex " +
-                  std::to_string(vertex->id()) + ") is not modelled");
     const bool pose = dynamic_cast<const VertexPose*>(vertex) != nullptr;
-    Block added{vertex->id(), vertex->fixed(), vertex->marginalized(), pose, std::vector<double>(vertex->estimateSize())};
+    Block added{vertex->id(), vertex->fixed(), vertex->marginalized(), pose,
+                std::vector<double>(vertex->estimateSize())};
     vertex->getEstimate(added.values.data());
     if (pose) {
       // Unit length, as the manifold keeps it and as our rotation matrix is built.
@@ -178,20 +171,24 @@ double* CeresStereoModel::block(const Vertex* vertex) {
 }
 
 void CeresStereoModel::addEdge(const Edge& edge) {
+  // Each modelled edge accepts only the vertex types modelled here.
+  std::vector<double*> blocks;
+  for (const Vertex* vertex : edge.vertices()) blocks.push_back(block(vertex));
   if (const auto* base = dynamic_cast<const EdgeProjectBase*>(&edge)) {
-    auto* cost = new ceres::AutoDiffCostFunction<BaseResidual, 2, 7, 3>(
-        new BaseResidual(Observation(*base, base->intrinsics())));
-    problem_.AddResidualBlock(cost, lossFor(base->robustKernel().get()), block(edge.vertex(0)), block(edge.vertex(1)));
+    std::unique_ptr<ceres::LossFunction> loss(lossFor(base->robustKernel().get()));
+    problem_.AddResidualBlock(new ceres::AutoDiffCostFunction<BaseResidual, 2, 7, 3>(
+                                  new BaseResidual(Observation(*base, base->intrinsics()))),
+                              loss.release(), blocks[0], blocks[1]);
   } else if (const auto* secondary = dynamic_cast<const EdgeProjectSecondary*>(&edge)) {
-    auto* cost = new ceres::AutoDiffCostFunction<SecondaryResidual, 2, 7, 3, 6>(
-        new SecondaryResidual(Observation(*secondary, secondary->camera().intrinsics)));
-    problem_.AddResidualBlock(cost, lossFor(secondary->robustKernel().get()), block(edge.vertex(0)),
-                              block(edge.vertex(1)), block(edge.vertex(2)));
+    std::unique_ptr<ceres::LossFunction> loss(lossFor(secondary->robustKernel().get()));
+    problem_.AddResidualBlock(new ceres::AutoDiffCostFunction<SecondaryResidual, 2, 7, 3, 6>(
+                                  new SecondaryResidual(Observation(*secondary, secondary->camera().intrinsics))),
+                              loss.release(), blocks[0], blocks[1], blocks[2]);
   } else if (const auto* scaled = dynamic_cast<const EdgeProjectSecondaryScaled*>(&edge)) {
-    auto* cost = new ceres::AutoDiffCostFunction<SecondaryScaledResidual, 2, 7, 3, 6, 1>(
-        new SecondaryScaledResidual(Observation(*scaled, scaled->camera().intrinsics)));
-    problem_.AddResidualBlock(cost, lossFor(scaled->robustKernel().get()), block(edge.vertex(0)),
-                              block(edge.vertex(1)), block(edge.vertex(2)), block(edge.vertex(3)));
+    std::unique_ptr<ceres::LossFunction> loss(lossFor(scaled->robustKernel().get()));
+    problem_.AddResidualBlock(new ceres::AutoDiffCostFunction<SecondaryScaledResidual, 2, 7, 3, 6, 1>(
+                                  new SecondaryScaledResidual(Observation(*scaled, scaled->camera().intrinsics))),
+                              loss.release(), blocks[0], blocks[1], blocks[2], blocks[3]);
   } else {
     throw Error(std::string("Ceres model: edge type ") + edge.typeTag() + " is not modelled");
   }

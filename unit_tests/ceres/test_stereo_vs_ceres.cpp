@@ -67,7 +67,14 @@ TEST(StereoVsCeres, KittiProblemReachesCeresFinalCost) {
   EXPECT_NEAR(atCeresSolution.graph.cost(), ceres.finalCost, kModelTolerance * ceres.finalCost);
 }
 
-TEST(StereoVsCeres, ActiveBoundsGradientProjectionReachesCeresFinalCost) {
+// With the truth outside the box, five of the six bounds end active. Ceres
+// clamps each LM step to the box but computes it as if the clamped parameters
+// could move, and from the common start it stops (function tolerance, even at
+// 1e-12) about 3 % above gradient projection, at a point from which our solver
+// still descends. So the agreement is checked on the optimum, both ways: from
+// the same start ours ends no more than 0.1 % above Ceres, and Ceres started at
+// our solution cannot lower it by more than 0.1 %.
+TEST(StereoVsCeres, ActiveBoundsGradientProjectionReachesTheOptimumCeresConfirms) {
   WindowProblemOptions options;
   options.trueOutsideBounds = true;  // roll above and yaw below their box
   WindowProblem ours = makeWindowProblem(options);
@@ -78,32 +85,12 @@ TEST(StereoVsCeres, ActiveBoundsGradientProjectionReachesCeresFinalCost) {
   const bench::SolveResult ceres = ceresModel.solve(stopping, ceres::DENSE_SCHUR);
   WindowProblem atCeresSolution = makeWindowProblem(options);
   ceresModel.copyTo(atCeresSolution.graph);
-  {
-    WindowProblem again = makeWindowProblem(options);
-    ceresModel.copyTo(again.graph);
-    const SolverSummary more = optimizeWithBounds(again.graph, stopping, again.extrinsicBounds, "gradient_projection");
-    std::fprintf(stderr, "DEBUG ours from ceres: %s\n", more.briefReport().c_str());
-    bench::CeresStereoModel fromOurs(ours.graph, ours.extrinsicBounds);
-    const bench::SolveResult c2 = fromOurs.solve(stopping, ceres::DENSE_SCHUR);
-    std::fprintf(stderr, "DEBUG ceres from ours: %d it %s %.9e -> %.9e\n", c2.iterations, c2.termination.c_str(), c2.initialCost, c2.finalCost);
-    WindowProblem again2 = makeWindowProblem(options);
-    bench::CeresStereoModel tight(again2.graph, again2.extrinsicBounds);
-    SolverOptions t = stopping; t.functionTolerance = 1e-12; t.parameterTolerance=1e-14; t.maxIterations = 1000;
-    const bench::SolveResult c3 = tight.solve(t, ceres::DENSE_SCHUR);
-    std::fprintf(stderr, "DEBUG ceres tight: %d it %s %.9e -> %.9e\n", c3.iterations, c3.termination.c_str(), c3.initialCost, c3.finalCost);
-    WindowProblem again3 = makeWindowProblem(options);
-    const SolverSummary m3 = optimizeWithBounds(again3.graph, t, again3.extrinsicBounds, "gradient_projection");
-    std::fprintf(stderr, "DEBUG ours tight: %s\n", m3.briefReport().c_str());
-  }
-  std::fprintf(stderr, "DEBUG ours %s\nceres %d it %s %.9e\n", summary.briefReport().c_str(), ceres.iterations, ceres.termination.c_str(), ceres.finalCost);
-  std::fprintf(stderr, "DEBUG ours ext %s\n", ::testing::PrintToString(std::vector<double>(ours.extrinsic->estimate().data(), ours.extrinsic->estimate().data()+6)).c_str());
-  std::fprintf(stderr, "DEBUG ceres ext %s\n", ::testing::PrintToString(std::vector<double>(atCeresSolution.extrinsic->estimate().data(), atCeresSolution.extrinsic->estimate().data()+6)).c_str());
 
   EXPECT_TRUE(summary.converged()) << summary.briefReport();
   EXPECT_TRUE(ceresConverged(ceres)) << ceres.termination;
   EXPECT_NEAR(ceres.initialCost, summary.initialCost, kModelTolerance * summary.initialCost);
-  EXPECT_NEAR(summary.finalCost, ceres.finalCost, kFinalTolerance * ceres.finalCost);
   EXPECT_NEAR(atCeresSolution.graph.cost(), ceres.finalCost, kModelTolerance * ceres.finalCost);
+  EXPECT_LE(summary.finalCost, (1.0 + kFinalTolerance) * ceres.finalCost);
   EXPECT_TRUE(ours.extrinsicBounds.hold());
   EXPECT_TRUE(atCeresSolution.extrinsicBounds.hold());
   // Both end on the two bounds the truth lies beyond (roll upper, yaw lower).
@@ -112,6 +99,14 @@ TEST(StereoVsCeres, ActiveBoundsGradientProjectionReachesCeresFinalCost) {
     EXPECT_DOUBLE_EQ(Bounds::value(bounds[3]), bounds[3].upper);
     EXPECT_DOUBLE_EQ(Bounds::value(bounds[5]), bounds[5].lower);
   }
+
+  bench::CeresStereoModel fromOurs(ours.graph, ours.extrinsicBounds);
+  const bench::SolveResult confirmation = fromOurs.solve(stopping, ceres::DENSE_SCHUR);
+  EXPECT_NEAR(confirmation.initialCost, summary.finalCost, kModelTolerance * summary.finalCost);
+  EXPECT_GE(confirmation.finalCost, (1.0 - kFinalTolerance) * summary.finalCost);
+  WindowProblem atConfirmation = makeWindowProblem(options);
+  fromOurs.copyTo(atConfirmation.graph);
+  EXPECT_TRUE(atConfirmation.extrinsicBounds.hold());
 }
 
 }  // namespace
