@@ -31,7 +31,7 @@ Graph makeEuclideanGraph() {
   Graph graph = makeBalToyProblem(bal);
   auto* point = static_cast<VertexPoint3*>(graph.vertex(5));
   point->setMarginalized(false);
-  auto* scale = graph.addVertex(std::make_unique<VertexScale>(100));
+  auto* scale = graph.addVertex(std::make_unique<VertexFocalScale>(100));
   scale->setEstimateVector(Eigen::Matrix<double, 1, 1>(0.1 / 3.0));
   auto cost = std::make_unique<EdgeQuadraticCost>();
   cost->setVertex(0, point);

@@ -91,7 +91,7 @@ TEST(Jacobians, ScaledPinholeMatchesCentralDifferences) {
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> scale(-0.3, 0.3);
   PoseAndPoint state;
-  VertexScale shared(2);
+  VertexFocalScale shared(2);
   for (int k = 0; k < kStates; ++k) {
     randomize(state, rng);
     shared.setEstimateVector(Eigen::Matrix<double, 1, 1>(scale(rng)));
@@ -191,14 +191,14 @@ TEST(Jacobians, LeastSquaresEdgeAddsWeightedGaussNewtonBlocks) {
 struct CostEdgeFixture {
   Graph graph;
   VertexPoint3* point;
-  VertexScale* scale;
+  VertexFocalScale* scale;
   std::vector<EdgeQuadraticCost*> edges;
 
   explicit CostEdgeFixture(std::uint64_t seed, int edgeCount) {
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> unit(0.0, 1.0);
     point = graph.addVertex(std::make_unique<VertexPoint3>(7, Eigen::Vector3d{unit(rng), unit(rng), unit(rng)}));
-    scale = graph.addVertex(std::make_unique<VertexScale>(3));
+    scale = graph.addVertex(std::make_unique<VertexFocalScale>(3));
     scale->setEstimateVector(Eigen::Matrix<double, 1, 1>(unit(rng)));
     for (int k = 0; k < edgeCount; ++k) {
       auto edge = std::make_unique<EdgeQuadraticCost>();

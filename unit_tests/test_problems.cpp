@@ -123,7 +123,7 @@ void EdgeQuadraticCost::readData(std::istream& in) {
   readUpperTriangle(in, weight, kTypeTag);
 }
 
-LRSVO_REGISTER_TYPE(Vertex, VertexScale);
+LRSVO_REGISTER_TYPE(Vertex, VertexFocalScale);
 LRSVO_REGISTER_TYPE(Edge, EdgePinhole);
 LRSVO_REGISTER_TYPE(Edge, EdgeScaledPinhole);
 LRSVO_REGISTER_TYPE(Edge, EdgeQuadraticCost);
@@ -152,7 +152,7 @@ int addToyProblem(Graph& graph, const ToyOptions& options) {
     point->setFixed(j < options.fixedPoints);
     points.push_back(point);
   }
-  VertexScale* scale = options.sharedScale ? graph.addVertex(std::make_unique<VertexScale>(id++)) : nullptr;
+  VertexFocalScale* scale = options.sharedScale ? graph.addVertex(std::make_unique<VertexFocalScale>(id++)) : nullptr;
 
   int edgeCount = 0;
   for (int j = 0; j < options.points; ++j) {

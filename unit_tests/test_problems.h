@@ -25,12 +25,12 @@ namespace lrsvo::test {
 
 // One scalar shared by every observation of a problem (a focal-length
 // scale), coupling all poses as the stereo extrinsic or kappa do.
-class VertexScale : public VectorVertex<1> {
+class VertexFocalScale : public VectorVertex<1> {
  public:
   static constexpr const char* kTypeTag = "TEST_SCALE";
   using VectorVertex<1>::VectorVertex;
   const char* typeTag() const override { return kTypeTag; }
-  std::unique_ptr<Vertex> clone() const override { return std::make_unique<VertexScale>(*this); }
+  std::unique_ptr<Vertex> clone() const override { return std::make_unique<VertexFocalScale>(*this); }
 };
 
 // Pinhole projection of a world point through a camera-from-world pose:
@@ -49,7 +49,7 @@ class EdgePinhole : public BaseEdge<2, VertexPose, VertexPoint3> {
 };
 
 // The same with a shared scale s on the focal length: f (1 + s) X_c.xy / X_c.z.
-class EdgeScaledPinhole : public BaseEdge<2, VertexPose, VertexPoint3, VertexScale> {
+class EdgeScaledPinhole : public BaseEdge<2, VertexPose, VertexPoint3, VertexFocalScale> {
  public:
   static constexpr const char* kTypeTag = "TEST_SCALED_PINHOLE";
   const char* typeTag() const override { return kTypeTag; }
@@ -63,7 +63,7 @@ class EdgeScaledPinhole : public BaseEdge<2, VertexPose, VertexPoint3, VertexSca
 };
 
 // A cost edge 1/2 (x - c)^T A (x - c) on x = (point, scale) stacked.
-class EdgeQuadraticCost : public BaseCostEdge<VertexPoint3, VertexScale> {
+class EdgeQuadraticCost : public BaseCostEdge<VertexPoint3, VertexFocalScale> {
  public:
   static constexpr const char* kTypeTag = "TEST_QUADRATIC";
   const char* typeTag() const override { return kTypeTag; }
@@ -85,7 +85,7 @@ struct ToyOptions {
   int poses = 6;
   int points = 40;
   int posesPerPoint = 3;
-  bool sharedScale = false;  // observations are EdgeScaledPinhole on one VertexScale
+  bool sharedScale = false;  // observations are EdgeScaledPinhole on one VertexFocalScale
   int fixedPoses = 2;        // the first poses are held fixed (fixes the gauge)
   int fixedPoints = 0;       // the first points are held fixed
   double pixelNoise = 0.5;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <Eigen/Geometry>
+
 #include "graph/vertex.h"
 
 namespace lrsvo {
@@ -18,11 +20,16 @@ class VertexStereoExtrinsic : public VectorVertex<6> {
 
   Eigen::Vector3d centre() const { return estimate_.head<3>(); }
   Eigen::Matrix3d rotation() const;
+  // The rigid transform X_c1 = R_s (X_c0 - c), secondary-from-base.
+  Eigen::Isometry3d secondaryFromBase() const;
   const char* typeTag() const override { return kTypeTag; }
   std::unique_ptr<Vertex> clone() const override { return std::make_unique<VertexStereoExtrinsic>(*this); }
 };
 
 // Rz(yaw) Ry(pitch) Rx(roll).
 Eigen::Matrix3d rotationFromRollPitchYaw(double roll, double pitch, double yaw);
+
+// The secondary-from-base transform of the six parameters s = (c, roll, pitch, yaw).
+Eigen::Isometry3d secondaryFromBase(const VertexStereoExtrinsic::Vector6& parameters);
 
 }  // namespace lrsvo
