@@ -11,7 +11,8 @@ namespace lrsvo {
 // Turn: level, heading changing at turnRate_rad_s (> 0: to the left, counter-
 // clockwise seen from above), banked as a coordinated turn. Climb: straight,
 // height changing at climbRate_m_s (< 0: descent), nose up along the path.
-// length_m is the distance flown along the path.
+// length_m is the distance flown along the path. Rates ramp in and out over
+// FlightOptions::transition_s.
 struct FlightLeg {
   enum class Kind { Straight, Turn, Climb };
   Kind kind = Kind::Straight;
@@ -31,6 +32,11 @@ struct FlightOptions {
   // Amplitude of a smooth seeded roll, pitch and yaw wobble on top of the
   // path's attitude (a few sinusoids of 2-10 s period per axis); 0: none.
   double attitudeNoise_rad = 0.0;
+  // Turns and climbs ramp their rate (and so bank and pitch) linearly in and
+  // out over this time at each end of the leg, as an aircraft rolls into a
+  // turn in about a second; 0: instantly. A turn's heading change is then
+  // turnRate * (duration - transition), a climb's height change likewise.
+  double transition_s = 1.0;
   std::uint64_t seed = 1;
 };
 
@@ -45,6 +51,8 @@ struct FlightPose {
 // Every kept frame from t = 0 to the end of the last leg. Throws lrsvo::Error
 // on non-positive speed, frame rate, frame step or altitude, on no legs, and
 // on a leg that does not fit its kind (e.g. a climb rate not below the speed).
+// Occlusion and the terrain are not known here: sim/feature_simulator.h
+// checks that the aircraft stays above the ground.
 std::vector<FlightPose> simulateFlight(const FlightOptions& options);
 
 // Standard gravity, for the bank angle of a coordinated turn: tan(bank) = v * turnRate / g.

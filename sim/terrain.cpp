@@ -33,11 +33,12 @@ void validate(const TerrainOptions& o) {
   check(std::isfinite(o.buildingSize_m) && o.buildingSize_m > 0.0, "buildingSize_m must be finite and > 0");
 }
 
-double uniform(std::mt19937_64& rng, double lo, double hi) {
+template <typename Generator>
+double uniform(Generator& rng, double lo, double hi) {
   return std::uniform_real_distribution<double>(lo, hi)(rng);
 }
 
-int poisson(std::mt19937_64& rng, double mean) { return mean > 0.0 ? std::poisson_distribution<int>(mean)(rng) : 0; }
+int poisson(SplitMix64& rng, double mean) { return mean > 0.0 ? std::poisson_distribution<int>(mean)(rng) : 0; }
 
 }  // namespace
 
@@ -76,7 +77,7 @@ double Terrain::maxHeight() const {
 }
 
 Terrain::Cell Terrain::makeCell(std::int64_t ix, std::int64_t iy) const {
-  std::mt19937_64 rng(mixSeed(options_.seed, static_cast<std::uint64_t>(ix), static_cast<std::uint64_t>(iy)));
+  SplitMix64 rng(mixSeed(options_.seed, static_cast<std::uint64_t>(ix), static_cast<std::uint64_t>(iy)));
   const double areaKm2 = cellSize_m_ * cellSize_m_ * 1e-6;
   const Eigen::Vector2d corner(ix * cellSize_m_, iy * cellSize_m_);
   auto position = [&]() -> Eigen::Vector2d {

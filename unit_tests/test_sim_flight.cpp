@@ -39,6 +39,7 @@ TEST(SimFlight, TurnChangesHeadingByRateTimesTimeOnACircleWithACoordinatedBank) 
   FlightOptions options;
   options.speed_m_s = 20.0;
   options.frameRate_hz = 10.0;
+  options.transition_s = 0.0;
   const double rate = 0.2;
   options.legs = {{FlightLeg::Kind::Turn, 40.0, rate}};  // 2 s: 0.4 rad to the left
   const std::vector<FlightPose> poses = simulateFlight(options);
@@ -62,6 +63,7 @@ TEST(SimFlight, ClimbRisesAtItsRateWithTheNoseUpAlongThePath) {
   options.altitude_m = 50.0;
   options.speed_m_s = 20.0;
   options.frameRate_hz = 5.0;
+  options.transition_s = 0.0;
   options.legs = {{FlightLeg::Kind::Climb, 40.0, 0.0, 2.0}};
   const std::vector<FlightPose> poses = simulateFlight(options);
   ASSERT_EQ(poses.size(), 11u);
@@ -71,20 +73,53 @@ TEST(SimFlight, ClimbRisesAtItsRateWithTheNoseUpAlongThePath) {
   EXPECT_NEAR(axisOf(poses.back(), 0).z(), 0.1, 1e-12);  // sin(path angle) = climb rate / speed
 }
 
-TEST(SimFlight, LegsJoinContinuouslyAndEachStartsFromThePreviousHeading) {
+TEST(SimFlight, RampedTurnRollsInAndOutSmoothly) {
+  FlightOptions options;
+  options.speed_m_s = 20.0;
+  options.frameRate_hz = 30.0;
+  options.transition_s = 1.0;
+  const double rate = 0.2, dt = 1.0 / 30.0;
+  options.legs = {{FlightLeg::Kind::Turn, 100.0, rate}};  // 5 s, the rate ramping over the first and last second
+  const std::vector<FlightPose> poses = simulateFlight(options);
+  ASSERT_EQ(poses.size(), 151u);
+  const auto heading = [&](std::size_t i) { return std::atan2(axisOf(poses[i], 0).y(), axisOf(poses[i], 0).x()); };
+  const auto bank = [&](std::size_t i) { return std::acos(-axisOf(poses[i], 2).z()); };
+  EXPECT_NEAR(heading(150), rate * (5.0 - 1.0), 1e-12);     // the trapezoid's area
+  EXPECT_NEAR(heading(15), rate * 0.5 * 0.5 / 2.0, 1e-12);  // half way up the ramp: w t^2 / (2 ramp)
+  EXPECT_NEAR(heading(90) - heading(60), rate * 1.0, 1e-12);
+  EXPECT_NEAR(bank(0), 0.0, 1e-7);
+  EXPECT_NEAR(bank(75), std::atan(20.0 * rate / kGravity_m_s2), 1e-12);
+  EXPECT_NEAR(bank(150), 0.0, 1e-7);
+  // bank = atan(k t) on the ramp, k = v w / (g ramp): it changes by at most k dt per frame.
+  const double k = 20.0 * rate / kGravity_m_s2;
+  for (std::size_t i = 1; i < poses.size(); ++i) {
+    EXPECT_LE(std::abs(bank(i) - bank(i - 1)), k * dt + 1e-12);
+    // Constant speed along the path: a frame's chord is at most, and nearly, v dt.
+    const double chord = (centreOf(poses[i]) - centreOf(poses[i - 1])).norm();
+    EXPECT_LE(chord, 20.0 * dt + 1e-9);
+    EXPECT_GT(chord, 20.0 * dt * (1.0 - 1e-4));
+  }
+}
+
+TEST(SimFlight, LegsJoinContinuouslyAndEachStartsFromThePreviousHeadingAndHeight) {
   FlightOptions options;
   options.speed_m_s = 25.0;
   options.frameRate_hz = 25.0;
-  options.legs = {
-      {FlightLeg::Kind::Straight, 50.0}, {FlightLeg::Kind::Turn, 50.0, -0.25}, {FlightLeg::Kind::Straight, 50.0}};
+  options.legs = {{FlightLeg::Kind::Straight, 50.0},
+                  {FlightLeg::Kind::Turn, 50.0, -0.25},
+                  {FlightLeg::Kind::Climb, 50.0, 0.0, 5.0},
+                  {FlightLeg::Kind::Straight, 50.0}};
   const std::vector<FlightPose> poses = simulateFlight(options);
-  ASSERT_EQ(poses.size(), 151u);
+  ASSERT_EQ(poses.size(), 201u);
   for (std::size_t i = 1; i < poses.size(); ++i)
     EXPECT_NEAR((centreOf(poses[i]) - centreOf(poses[i - 1])).norm(), 1.0, 1e-3);  // 25 m/s at 25 Hz
-  // The last leg flies straight at heading -0.25 rad/s * 2 s = -0.5 rad.
-  EXPECT_TRUE(axisOf(poses.back(), 0).isApprox(Eigen::Vector3d(std::cos(-0.5), std::sin(-0.5), 0.0), 1e-12));
-  const Eigen::Vector3d lastLeg = centreOf(poses[150]) - centreOf(poses[100]);
-  EXPECT_TRUE(lastLeg.isApprox(50.0 * Eigen::Vector3d(std::cos(-0.5), std::sin(-0.5), 0.0), 1e-9));
+  // 2 s legs with 1 s ramps at each end: the turn changes the heading by
+  // -0.25 rad/s * 1 s, the climb the height by 5 m/s * 1 s.
+  const Eigen::Vector3d direction(std::cos(-0.25), std::sin(-0.25), 0.0);
+  EXPECT_TRUE(axisOf(poses.back(), 0).isApprox(direction, 1e-12));
+  const Eigen::Vector3d lastLeg = centreOf(poses[200]) - centreOf(poses[150]);
+  EXPECT_TRUE(lastLeg.isApprox(50.0 * direction, 1e-9)) << lastLeg.transpose();
+  EXPECT_NEAR(centreOf(poses.back()).z(), 105.0, 1e-9);
 }
 
 TEST(SimFlight, AttitudeNoiseIsBoundedSeededAndLeavesThePathAlone) {
@@ -124,6 +159,7 @@ TEST(SimFlight, BadOptionsThrow) {
   throws([](FlightOptions& o) { o.legs = {{FlightLeg::Kind::Turn, 10.0, 0.0}}; });
   throws([](FlightOptions& o) { o.legs = {{FlightLeg::Kind::Climb, 10.0, 0.0, 20.0}}; });  // as fast as the aircraft
   throws([](FlightOptions& o) { o.attitudeNoise_rad = -0.1; });
+  throws([](FlightOptions& o) { o.transition_s = -1.0; });
 }
 
 }  // namespace

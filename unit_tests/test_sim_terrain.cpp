@@ -57,7 +57,7 @@ TEST(SimTerrain, TreesCoverTheExpectedShareOfTheGroundAndStayBelowTheirHeight) {
   const Terrain terrain(options);
   // Crowns of radius 0.3 h, h uniform in [6, 12] m: mean area pi 0.09 E[h^2] = 23.75 m^2;
   // 2000 per km^2 (Poisson) cover 1 - exp(-0.002 * 23.75) = 4.64 % of the ground.
-  EXPECT_NEAR(coveredFraction(terrain, 2000.0, 100000), 0.0464, 0.005);
+  EXPECT_NEAR(coveredFraction(terrain, 2000.0, 50000), 0.0464, 0.005);
   for (const Eigen::Vector3d& p : terrain.samplePoints({0.0, 0.0}, {500.0, 500.0}, 20000, 3)) EXPECT_LE(p.z(), 12.0);
 }
 
@@ -67,7 +67,7 @@ TEST(SimTerrain, BuildingsCoverTheExpectedShareWithFlatRoofs) {
   options.treeDensity_per_km2 = 0.0;
   const Terrain terrain(options);
   // Sides 0.5-1.5 times 15 m: mean area 225 m^2; 50 per km^2 cover 1 - exp(-0.01125) = 1.12 %.
-  EXPECT_NEAR(coveredFraction(terrain, 2000.0, 100000), 0.0112, 0.003);
+  EXPECT_NEAR(coveredFraction(terrain, 2000.0, 50000), 0.0112, 0.003);
   for (const Eigen::Vector3d& p : terrain.samplePoints({0.0, 0.0}, {1000.0, 1000.0}, 20000, 4))
     EXPECT_TRUE(p.z() == 0.0 || (p.z() >= 4.0 && p.z() <= 8.0)) << p.z();  // roofs 0.5-1 times 8 m
 }
