@@ -89,29 +89,34 @@ double runOne(const Study& study, const StudyOptions& options) {
   return seconds;
 }
 
-void listStudies() {
-  std::printf("%-20s %-8s %-14s %s\n", "study", "figure", "paper trials", "title");
-  for (const Study& s : studies())
-    std::printf("%-20s %-8s %-14s %s\n", s.name.c_str(), s.figure.c_str(),
-                s.paperTrials > 0 ? std::to_string(s.paperTrials).c_str() : "-", s.title.c_str());
-}
-
-// The figure's number, for ordering the index as the paper does.
+// The figure's number, for ordering studies as the paper does.
 int figureNumber(const Study& study) {
   const std::size_t digit = study.figure.find_first_of("0123456789");
   return digit == std::string::npos ? 1 << 20 : std::stoi(study.figure.substr(digit));
 }
 
+std::vector<const Study*> studiesInFigureOrder() {
+  std::vector<const Study*> ordered;
+  for (const Study& s : studies()) ordered.push_back(&s);
+  std::stable_sort(ordered.begin(), ordered.end(), [](const Study* a, const Study* b) {
+    return std::make_pair(figureNumber(*a), a->name) < std::make_pair(figureNumber(*b), b->name);
+  });
+  return ordered;
+}
+
+void listStudies() {
+  std::printf("%-20s %-8s %-14s %s\n", "study", "figure", "paper trials", "title");
+  for (const Study* s : studiesInFigureOrder())
+    std::printf("%-20s %-8s %-14s %s\n", s->name.c_str(), s->figure.c_str(),
+                s->paperTrials > 0 ? std::to_string(s->paperTrials).c_str() : "-", s->title.c_str());
+}
+
 void runAll(const StudyCommandOptions& o) {
   const std::filesystem::path outDir =
       o.out.empty() ? std::filesystem::path("lrsvo_studies") : std::filesystem::path(o.out);
-  std::vector<const Study*> ordered;
-  for (const Study& s : studies()) ordered.push_back(&s);
-  std::stable_sort(ordered.begin(), ordered.end(),
-                   [](const Study* a, const Study* b) { return figureNumber(*a) < figureNumber(*b); });
   std::vector<StudyOutcome> outcomes;
   std::string failed;
-  for (const Study* study : ordered) {
+  for (const Study* study : studiesInFigureOrder()) {
     StudyOutcome outcome{study->name, study->figure, study->title, 0.0, ""};
     const auto start = std::chrono::steady_clock::now();
     try {
