@@ -76,7 +76,6 @@ StudyReport runRangeBias(const StudyOptions& options) {
       }
     }
   }
-  options.progress(1.0, "done");
 
   report.addSetting("cameras", format("2, 3 and 4 in a horizontal line, %.1f m between neighbours, parallel optical "
                                       "axes, 1024 x 768",
@@ -115,6 +114,7 @@ StudyReport runRangeBias(const StudyOptions& options) {
       {format("pair at 120 m, f %.0f px, 1 px noise on the disparity", f),
        sampleMoments(disparityNoise.depths_m).mean - farthest, 3.0, "m",
        format("another reading of the paper's noise: 0.71 px per image; %ld failed", disparityNoise.failed)});
+  options.progress(1.0, "done");
   report.setSeconds(stopwatch.seconds());
   return report;
 }
