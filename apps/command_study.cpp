@@ -152,9 +152,10 @@ void runStudyCommand(const StudyCommandOptions& o) {
 
 std::string studyFooter() {
   std::string text = "Studies (lrsvo study list):\n";
-  for (const Study& s : studies()) {
-    text += "  " + s.name + std::string(s.name.size() < 20 ? 20 - s.name.size() : 1, ' ') + s.figure + ": " + s.title;
-    if (s.paperTrials > 0) text += " (" + std::to_string(s.paperTrials) + " trials per case by default)";
+  for (const Study* s : studiesInFigureOrder()) {
+    text +=
+        "  " + s->name + std::string(s->name.size() < 20 ? 20 - s->name.size() : 1, ' ') + s->figure + ": " + s->title;
+    if (s->paperTrials > 0) text += " (" + std::to_string(s->paperTrials) + " trials per case by default)";
     text += '\n';
   }
   text +=
