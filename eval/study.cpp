@@ -51,6 +51,11 @@ std::string shellQuoted(const std::string& text) {
   return quoted + "'";
 }
 
+bool canImportMatplotlib(const std::string& python) {
+  const std::string command = shellQuoted(python) + " -c 'import matplotlib' >/dev/null 2>&1";
+  return std::system(command.c_str()) == 0;
+}
+
 }  // namespace
 
 StudyTable::StudyTable(std::string fileName, std::vector<std::string> columns)
@@ -101,10 +106,14 @@ void StudyReport::write(const StudyOptions& options) const {
   std::string plotNote;
   if (options.plot) {
     const std::filesystem::path script = plotScript(study_);
+    const std::string python = script.empty() ? std::string() : plottingPython();
     if (script.empty()) {
       plotNote = "no plotting script eval/plots/" + study_ + ".py";
+    } else if (python.empty()) {
+      plotNote = "plot skipped: no Python with matplotlib (install python3-matplotlib or set LRSVO_PYTHON)";
     } else {
-      const std::string command = "python3 " + shellQuoted(script.string()) + " " + shellQuoted(options.outDir.string());
+      const std::string command =
+          shellQuoted(python) + " " + shellQuoted(script.string()) + " " + shellQuoted(options.outDir.string());
       if (std::system(command.c_str()) != 0) throw Error("study " + study_ + ": the plot failed: " + command);
       files.push_back(study_ + ".png");
     }
@@ -150,6 +159,19 @@ void StudyReport::print(std::ostream& out) const {
   }
   std::snprintf(line, sizeof line, "  (%.1f s)\n", seconds_);
   out << line;
+}
+
+std::string plottingPython() {
+  static const std::string found = [] {
+    std::vector<std::string> candidates;
+    if (const char* python = std::getenv("LRSVO_PYTHON")) candidates.emplace_back(python);
+    candidates.emplace_back("python3");
+    candidates.emplace_back("/usr/bin/python3");
+    for (const std::string& candidate : candidates)
+      if (canImportMatplotlib(candidate)) return candidate;
+    return std::string();
+  }();
+  return found;
 }
 
 std::vector<Study>& studies() {

@@ -52,6 +52,8 @@ class StudyTable {
 // summary.json ({"study", "figure", "title", "settings", "checks": [{"name",
 // "ours", "paper", "unit", "note"}], "files", "seconds"}) and, when plotting,
 // <study>.png from eval/plots/<study>.py; `print` shows the checks as a table.
+// Without a script or a Python that has matplotlib, the plot is skipped and
+// summary.json says why under "plot"; a script that fails throws lrsvo::Error.
 class StudyReport {
  public:
   StudyReport(std::string study, std::string figure, std::string title);
@@ -84,6 +86,11 @@ struct Study {
   int paperTrials = 0;  // the paper's trial count (0: not a Monte Carlo study)
   std::function<StudyReport(const StudyOptions&)> run;
 };
+
+// The Python interpreter that plots: $LRSVO_PYTHON, else `python3` on the
+// PATH, else /usr/bin/python3 (Debian's, where python3-matplotlib installs),
+// the first that can import matplotlib. Empty when none can.
+std::string plottingPython();
 
 std::vector<Study>& studies();
 const Study& findStudy(const std::string& name);  // throws lrsvo::Error listing the known names
