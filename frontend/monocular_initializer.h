@@ -1,0 +1,57 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "frontend/bundle_graph.h"
+#include "frontend/observations.h"
+#include "frontend/pose_estimator.h"
+#include "frontend/rig.h"
+#include "frontend/sparse_map.h"
+#include "frontend/triangulation.h"
+#include "frontend/two_view.h"
+#include "graph/solver_summary.h"
+
+namespace lrsvo {
+
+struct MonocularOptions {
+  int frames = 10;               // base frames used, from the first
+  double initialBaseline = 1.0;  // distance given to the first pair: the map's unit
+  int minViews = 3;              // views a track needs before it is triangulated (after the first pair)
+  int minPosePoints = 12;        // mapped points a frame must see for its pose
+  int minPairPoints = 30;        // points triangulated from the first pair, at least
+  TwoViewOptions twoView;
+  PoseEstimatorOptions pose;
+  // A point needs rays 2 mrad apart (depth up to ~500 x the widest baseline
+  // it was seen over) and an RMS reprojection error of at most 3 px.
+  TriangulationOptions triangulation{.maxIterations = 10, .minParallax_rad = 2e-3, .maxReprojectionError_px = 3.0};
+  BundleGraphOptions bundle;
+  std::string solver = "lm_schur_dense";
+  int maxIterations = 50;  // per bundle adjustment
+  std::uint64_t seed = 1;
+};
+
+struct MonocularResult {
+  bool success = false;
+  std::string failure;  // why not, when !success
+  SparseMap map;        // frames reached; world = the first camera, unit = the first pair's distance / initialBaseline
+  SolverSummary summary;  // the last bundle adjustment
+};
+
+// Monocular visual odometry over the base camera of the first N frames, at an
+// arbitrary scale (method.md, long-range initialisation, steps 2-3):
+//  - two-view pose of frames 0 and 1, distance initialBaseline; triangulate
+//    their shared inlier tracks;
+//  - each next frame: pose by P3P in MLESAC from its base observations of
+//    mapped points; triangulate tracks seen in >= minViews frames so far;
+//    bundle adjustment over every frame so far.
+// Gauge: pose 0 is held, and the distance between poses 0 and 1 is held at
+// initialBaseline by a stiff prior (EdgeCentreDistance) rather than by
+// holding pose 1, whose rotation and direction of travel the later frames
+// then still refine. Only the base camera (camera 0) is used. Reports
+// failure with the frames reached; throws lrsvo::Error on an invalid rig or options.
+MonocularResult buildMonocularMap(const Rig& rig, const std::vector<FrameObservations>& frames,
+                                  const MonocularOptions& options = {});
+
+}  // namespace lrsvo
