@@ -21,9 +21,12 @@ struct InitializationResult {
   std::vector<Eigen::Isometry3d> cameraFromWorld;
   std::map<int, Eigen::Vector3d> points;                   // by track id
   std::vector<VertexStereoExtrinsic::Vector6> extrinsics;  // [k - 1] for secondary camera k
-  double kappa = 1.0;             // the estimated scale before the map was multiplied by it (1 when not estimated)
-  double kappaRelativeStd = 0.0;  // its standard deviation over its value (0 when not estimated)
-  SolverSummary summary;          // the final bundle adjustment
+  // The factor that made the map metric (long-range: kappa |c_cal| / |c|, the
+  // map's unit in metres; 1 for the rigid stereo start), and kappa's relative
+  // standard deviation (0 when kappa is not estimated).
+  double kappa = 1.0;
+  double kappaRelativeStd = 0.0;
+  SolverSummary summary;                 // the final bundle adjustment
   double rmsReprojectionError_px = 0.0;  // per image coordinate, over every observation in that adjustment
 };
 

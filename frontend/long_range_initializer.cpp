@@ -93,23 +93,35 @@ InitializationResult LongRangeInitializer::initialize(const Rig& rig,
     failure = "RMS reprojection error " + format("%.3g", result.rmsReprojectionError_px) + " px exceeds " +
               format("%.3g", o.maxRmsReprojectionError_px) + " px";
 
-  SparseMap map = bundle.map();
+  // kappa and the extrinsic centres share an exact gauge: (c, kappa) -> (b c, b kappa) changes no projection
+  // (nor, without kappa, (c, map) -> (b c, b map)). Only c's bounds pin it, to +-q / |c| (0.14 % for 1 mm on
+  // 0.7 m); without bounds it is free. So the metric unit comes from the calibrated baseline length: the map is
+  // multiplied by kappa |c_cal| / |c| and each c by |c_cal| / |c|, which keeps every projection.
+  const double kappa = o.estimateScale ? bundle.scale()->kappa() : 1.0;
+  double calibratedLength = 0.0, estimatedLength = 0.0;
+  for (int k = 0; k < rig.secondaryCount(); ++k) {
+    calibratedLength += rig.extrinsics[k].head<3>().norm();
+    estimatedLength += result.extrinsics[k].head<3>().norm();
+  }
+  const double toCalibratedLength = calibratedLength / estimatedLength;
+  result.kappa = kappa * toCalibratedLength;
+  if (!(std::isfinite(result.kappa) && result.kappa > 0.0)) {
+    result.failure = "long-range: the map's scale " + format("%g", result.kappa) + " is not positive and finite";
+    return result;
+  }
   if (o.estimateScale) {
-    result.kappa = bundle.scale()->kappa();
-    if (!(std::isfinite(result.kappa) && result.kappa > 0.0)) {
-      result.failure = "long-range: kappa = " + format("%g", result.kappa) + " is not a positive finite scale";
-      return result;
-    }
     try {
-      result.kappaRelativeStd = kappaStandardDeviation(bundle, bounds) / result.kappa;
+      result.kappaRelativeStd = kappaStandardDeviation(bundle, bounds) / kappa;
     } catch (const Error&) {
       result.kappaRelativeStd = std::numeric_limits<double>::infinity();
     }
     if (failure.empty() && !(result.kappaRelativeStd <= o.maxKappaRelativeStd))
       failure = "kappa is poorly conditioned: relative standard deviation " + format("%.3g", result.kappaRelativeStd) +
                 " exceeds " + format("%.3g", o.maxKappaRelativeStd);
-    map.scale(result.kappa);
   }
+  for (auto& extrinsic : result.extrinsics) extrinsic.head<3>() *= toCalibratedLength;
+  SparseMap map = bundle.map();
+  map.scale(result.kappa);
   result.cameraFromWorld = std::move(map.cameraFromWorld);
   result.points = std::move(map.points);
   result.success = failure.empty();

@@ -17,10 +17,16 @@ namespace lrsvo {
 
 struct MonocularOptions {
   int frames = 10;               // base frames used, from the first
-  double initialBaseline = 1.0;  // distance given to the first pair: the map's unit
-  int minViews = 3;              // views a track needs before it is triangulated (after the first pair)
-  int minPosePoints = 12;        // mapped points a frame must see for its pose
-  int minPairPoints = 30;        // points triangulated from the first pair, at least
+  double initialBaseline = 1.0;  // distance given to frames 0 and 1: the map's unit
+  // The two-view pair is frame 0 and the last frame still sharing this
+  // fraction of frame 0's tracks: the widest baseline with a well-populated
+  // overlap. Frames 0 and 1 alone leave the essential matrix ambiguous at
+  // long range (at 150 m and 6.7 m apart, RANSAC picked a forward motion
+  // that explains the flow as well as the true sideways one).
+  double pairOverlap = 0.5;
+  int minViews = 2;        // views a track needs before it is triangulated (after the first pair)
+  int minPosePoints = 12;  // mapped points a frame must see for its pose
+  int minPairPoints = 30;  // points triangulated from the first pair, at least
   TwoViewOptions twoView;
   PoseEstimatorOptions pose;
   // A point needs rays 2 mrad apart (depth up to ~500 x the widest baseline
@@ -35,22 +41,23 @@ struct MonocularOptions {
 struct MonocularResult {
   bool success = false;
   std::string failure;  // why not, when !success
-  SparseMap map;        // frames reached; world = the first camera, unit = the first pair's distance / initialBaseline
+  SparseMap map;  // every frame on success (empty otherwise); world = the first camera, |C_1 - C_0| = initialBaseline
   SolverSummary summary;  // the last bundle adjustment
 };
 
 // Monocular visual odometry over the base camera of the first N frames, at an
 // arbitrary scale (method.md, long-range initialisation, steps 2-3):
-//  - two-view pose of frames 0 and 1, distance initialBaseline; triangulate
-//    their shared inlier tracks;
-//  - each next frame: pose by P3P in MLESAC from its base observations of
-//    mapped points; triangulate tracks seen in >= minViews frames so far;
-//    bundle adjustment over every frame so far.
-// Gauge: pose 0 is held, and the distance between poses 0 and 1 is held at
-// initialBaseline by a stiff prior (EdgeCentreDistance) rather than by
-// holding pose 1, whose rotation and direction of travel the later frames
-// then still refine. Only the base camera (camera 0) is used. Reports
-// failure with the frames reached; throws lrsvo::Error on an invalid rig or options.
+//  - two-view pose of frame 0 and the pair frame p (see pairOverlap) at unit
+//    distance; triangulate their shared inlier tracks;
+//  - each other frame (1..p-1, then p+1..N-1): pose by P3P in MLESAC from its
+//    base observations of mapped points; triangulate tracks seen in
+//    >= minViews posed frames; bundle adjustment over every posed frame;
+//  - finally the map is scaled so that frames 0 and 1 are initialBaseline apart.
+// Gauge: pose 0 is held, and the distance between frames 0 and p by a prior
+// (EdgeCentreDistance) rather than by holding pose p, whose rotation and
+// direction of travel the other frames then still refine. Only the base
+// camera (camera 0) is used. Reports failure in the result; throws
+// lrsvo::Error on an invalid rig or options.
 MonocularResult buildMonocularMap(const Rig& rig, const std::vector<FrameObservations>& frames,
                                   const MonocularOptions& options = {});
 

@@ -83,9 +83,10 @@ Eigen::Isometry3d refinePose(const std::vector<PoseMatch>& matches, const std::v
 int requiredIterations(double inlierFraction, double confidence, int maxIterations) {
   const double allInliers = std::pow(std::clamp(inlierFraction, 0.0, 1.0), 3);
   if (allInliers >= 1.0) return 1;
-  if (allInliers <= 0.0) return maxIterations;
-  const double needed = std::ceil(std::log(1.0 - confidence) / std::log(1.0 - allInliers));
-  return static_cast<int>(std::min<double>(needed, maxIterations));
+  // log1p keeps a tiny fraction from rounding the denominator to zero.
+  const double denominator = std::log1p(-allInliers);
+  if (!(denominator < 0.0)) return maxIterations;
+  return static_cast<int>(std::min<double>(std::ceil(std::log(1.0 - confidence) / denominator), maxIterations));
 }
 
 }  // namespace

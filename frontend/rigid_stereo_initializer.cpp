@@ -1,6 +1,7 @@
 #include "frontend/rigid_stereo_initializer.h"
 
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -16,16 +17,17 @@ void triangulateStereo(SparseMap& map, const Rig& rig, const FrameObservations& 
                        const TriangulationOptions& options) {
   const Eigen::Isometry3d& base = map.cameraFromWorld[frame];
   std::map<int, std::vector<TriangulationView>> views;
+  std::set<int> seenByBase;
   for (const Observation& observation : observations.observations) {
     if (map.points.count(observation.track)) continue;
     views[observation.track].push_back(
         {rig.cameraFromWorld(base, observation.camera), rig.cameras[observation.camera].intrinsics, observation.pixel});
+    if (observation.camera == 0) seenByBase.insert(observation.track);
   }
-  for (const Observation& observation : observations.observations) {
-    auto it = views.find(observation.track);
-    if (observation.camera != 0 || it == views.end() || it->second.size() < 2) continue;
-    const TriangulationResult point = triangulate(it->second, options);
-    if (point.valid) map.points[observation.track] = point.point;
+  for (const auto& [track, trackViews] : views) {
+    if (!seenByBase.count(track) || trackViews.size() < 2) continue;
+    const TriangulationResult point = triangulate(trackViews, options);
+    if (point.valid) map.points[track] = point.point;
   }
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <numeric>
+#include <random>
 #include <string>
 #include <utility>
 
@@ -96,20 +98,44 @@ TwoViewResult estimateTwoView(const FrameObservations& a, const FrameObservation
     return failed(result, std::to_string(result.correspondences) + " shared tracks, need at least " +
                               std::to_string(std::max(5, options.minInliers)));
 
-  // Normalised coordinates: the camera matrix is the identity and the
-  // threshold is in units of the focal length.
+  // OpenCV's RANSAC draws its samples from a fixed internal stream
+  // (cv::setRNGSeed does not reach it), so the seed acts through the order of
+  // the correspondences: each attempt shuffles them. Near-planar ground seen
+  // from far away lets RANSAC settle on the twin of the true essential
+  // matrix (motion along the ground's normal) with nearly as many inliers
+  // under the Sampson distance; only the cheirality test tells them apart, so
+  // the attempt with the most inliers in front of both cameras wins.
   const cv::Matx33d identity = cv::Matx33d::eye();
-  cv::setRNGSeed(static_cast<int>(options.seed & 0x7fffffff));
-  cv::Mat inlierMask;
-  const cv::Mat essential = cv::findEssentialMat(pointsA, pointsB, identity, cv::RANSAC, options.confidence,
-                                                 options.ransacThreshold_px / intrinsics.fx, inlierMask);
-  // findEssentialMat may return several stacked 3x3 solutions; the first is RANSAC's best.
-  if (essential.rows < 3 || essential.cols != 3) return failed(result, "no essential matrix found");
-  cv::Mat rotation, translation;
-  const int inFront =
-      cv::recoverPose(essential.rowRange(0, 3), pointsA, pointsB, identity, rotation, translation, inlierMask);
-  if (inFront < options.minInliers)
-    return failed(result, std::to_string(inFront) + " of " + std::to_string(result.correspondences) +
+  std::mt19937_64 rng(options.seed);
+  std::vector<int> order(tracks.size());
+  std::iota(order.begin(), order.end(), 0);
+  int bestInFront = -1;
+  cv::Mat rotation, translation, inlierMask;
+  for (int attempt = 0; attempt < options.attempts; ++attempt) {
+    std::shuffle(order.begin(), order.end(), rng);
+    std::vector<cv::Point2d> shuffledA, shuffledB;
+    for (int i : order) {
+      shuffledA.push_back(pointsA[i]);
+      shuffledB.push_back(pointsB[i]);
+    }
+    cv::Mat mask;
+    const cv::Mat essential = cv::findEssentialMat(shuffledA, shuffledB, identity, cv::RANSAC, options.confidence,
+                                                   options.ransacThreshold_px / intrinsics.fx, mask);
+    // findEssentialMat may return several stacked 3x3 solutions; the first is RANSAC's best.
+    if (essential.rows < 3 || essential.cols != 3) continue;
+    cv::Mat r, t;
+    const int inFront = cv::recoverPose(essential.rowRange(0, 3), shuffledA, shuffledB, identity, r, t, mask);
+    if (inFront <= bestInFront) continue;
+    bestInFront = inFront;
+    rotation = r;
+    translation = t;
+    inlierMask = cv::Mat::zeros(static_cast<int>(tracks.size()), 1, CV_8U);
+    for (std::size_t i = 0; i < order.size(); ++i)
+      inlierMask.at<unsigned char>(order[i]) = mask.at<unsigned char>(static_cast<int>(i));
+  }
+  if (bestInFront < 0) return failed(result, "no essential matrix found");
+  if (bestInFront < options.minInliers)
+    return failed(result, std::to_string(bestInFront) + " of " + std::to_string(result.correspondences) +
                               " correspondences are inliers in front of both cameras, need " +
                               std::to_string(options.minInliers) + " (too little parallax or motion?)");
 

@@ -20,7 +20,8 @@ struct TwoViewOptions {
   int camera = 0;             // which camera of the rig the two frames' observations come from
   bool refine = true;         // bundle adjustment of the pair over the inliers after RANSAC
   std::string refineSolver = "lm_schur_dense";
-  std::uint64_t seed = 1;  // OpenCV's random generator is seeded with this before RANSAC
+  int attempts = 5;  // RANSAC runs, each on a seeded shuffle of the correspondences
+  std::uint64_t seed = 1;
 };
 
 // The relative pose of two frames of one camera: X_b = R X_a + t with |t| = 1
@@ -38,7 +39,8 @@ struct TwoViewResult {
 
 // Five-point essential matrix in RANSAC on normalised image coordinates
 // (cv::findEssentialMat), decomposed by cv::recoverPose (the cheirality test
-// picks one of the four solutions). RANSAC keeps the best minimal sample's
+// picks one of the four solutions); of `attempts` runs the one with the most
+// inliers in front of both cameras is kept. RANSAC keeps the best minimal sample's
 // model, so with `refine` the pose is then adjusted with the inliers'
 // triangulated points (camera a held, the distance held at 1). Reports
 // failure (does not throw) when there are too few correspondences or inliers.
