@@ -17,6 +17,7 @@ using Vector6 = VertexStereoExtrinsic::Vector6;
 
 // Independent streams, so that e.g. turning outliers on leaves the noise as it was.
 constexpr std::uint64_t kPointStream = 1, kNoiseStream = 2, kOutlierStream = 3, kDropStream = 4;
+constexpr double kMaxPoints = 5e7;  // a few GB of observations; far beyond any flight of the paper
 
 void check(bool condition, const std::string& message) {
   if (!condition) throw Error("feature simulation: " + message);
@@ -96,10 +97,12 @@ class Simulator {
     }
     footprintArea /= static_cast<double>(searchBoxes_.size());
     ScenePointGrid grid(searchBoxes_, 0.5 * std::sqrt(footprintArea));
-    const int count = o_.pointsPerFrame > 0
-                          ? static_cast<int>(std::lround(o_.pointsPerFrame * grid.area() / footprintArea))
-                          : o_.points;
-    grid.sample(terrain_, count, mixSeed(o_.seed, kPointStream));
+    const double count =
+        o_.pointsPerFrame > 0 ? std::round(o_.pointsPerFrame * grid.area() / footprintArea) : o_.points;
+    check(count <= kMaxPoints, "pointsPerFrame " + std::to_string(o_.pointsPerFrame) + " over this flight needs " +
+                                   std::to_string(count) + " points, more than the " + std::to_string(kMaxPoints) +
+                                   " allowed; lower pointsPerFrame or shorten the flight");
+    grid.sample(terrain_, static_cast<int>(count), mixSeed(o_.seed, kPointStream));
     return grid;
   }
 

@@ -8,6 +8,11 @@
 #include "sim/seed_mix.h"
 
 namespace lrsvo {
+namespace {
+
+constexpr double kWorldLimit_m = 1e9;  // keeps every cell index well inside int64
+
+}  // namespace
 
 ScenePointGrid::ScenePointGrid(const std::vector<Eigen::AlignedBox2d>& regions, double cellSize_m)
     : cellSize_m_(cellSize_m) {
@@ -15,6 +20,8 @@ ScenePointGrid::ScenePointGrid(const std::vector<Eigen::AlignedBox2d>& regions, 
     throw Error("scene point grid: the cell size must be finite and > 0, got " + std::to_string(cellSize_m));
   if (regions.empty()) throw Error("scene point grid: needs at least one region");
   for (const Eigen::AlignedBox2d& region : regions) {
+    if (!(region.min().cwiseAbs().maxCoeff() <= kWorldLimit_m && region.max().cwiseAbs().maxCoeff() <= kWorldLimit_m))
+      throw Error("scene point grid: a region is empty, not finite or beyond +-1e9 m");
     const Key low = key(region.min().x(), region.min().y()), high = key(region.max().x(), region.max().y());
     for (std::int64_t ix = low.first; ix <= high.first; ++ix)
       for (std::int64_t iy = low.second; iy <= high.second; ++iy) cells_[{ix, iy}];

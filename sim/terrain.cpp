@@ -15,6 +15,7 @@ namespace {
 constexpr int kWaves = 6;
 constexpr double kCrownRadiusPerHeight = 0.3;  // a 12 m tree has a crown about 7 m across
 constexpr double kMinCellSize_m = 50.0;
+constexpr double kWorldLimit_m = 1e9;              // keeps every cell index well inside int64
 constexpr std::uint64_t kWaveStream = 0x77617665;  // "wave"
 
 void check(bool condition, const std::string& message) {
@@ -110,7 +111,8 @@ const Terrain::Cell& Terrain::cell(std::int64_t ix, std::int64_t iy, CellCache& 
 }
 
 double Terrain::height(double x, double y, CellCache& cache) const {
-  check(std::isfinite(x) && std::isfinite(y), "height asked at a non-finite position");
+  check(std::abs(x) <= kWorldLimit_m && std::abs(y) <= kWorldLimit_m,
+        "height asked at a non-finite position or beyond the world's +-1e9 m");
   double z = groundHeight(x, y);
   const auto ix = static_cast<std::int64_t>(std::floor(x / cellSize_m_));
   const auto iy = static_cast<std::int64_t>(std::floor(y / cellSize_m_));

@@ -109,6 +109,8 @@ TEST(SimTerrain, BadOptionsThrow) {
   const Terrain terrain(TerrainOptions{});
   EXPECT_THROW(terrain.samplePoints({1.0, 0.0}, {0.0, 1.0}, 10, 1), Error);
   EXPECT_THROW(terrain.samplePoints({0.0, 0.0}, {1.0, 1.0}, -1, 1), Error);
+  EXPECT_THROW(terrain.height(NAN, 0.0), Error);
+  EXPECT_THROW(terrain.height(0.0, 1e12), Error);
 }
 
 }  // namespace
