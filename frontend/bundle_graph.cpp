@@ -37,7 +37,9 @@ void holdCentreDistance(Graph& graph, VertexPose* a, VertexPose* b) {
 }
 
 BundleGraph::BundleGraph(const Rig& rig, const SparseMap& map, int fixedPoses, BundleGraphOptions options)
-    : rig_(rig), options_(std::move(options)), extrinsics_(rig.cameras.size() - 1, nullptr) {
+    : rig_(rig), options_(std::move(options)) {
+  rig.validate();
+  extrinsics_.assign(rig.secondaryCount(), nullptr);
   if (!(options_.sigma_px > 0.0)) throw Error("bundle graph: sigma_px must be positive");
   for (std::size_t i = 0; i < map.cameraFromWorld.size(); ++i) {
     auto pose = std::make_unique<VertexPose>(nextId_++, map.cameraFromWorld[i]);

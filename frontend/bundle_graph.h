@@ -54,6 +54,7 @@ class BundleGraph {
 
   Graph& graph() { return graph_; }
   VertexScale* scale() const { return scale_; }
+  const VertexPose* pose(int index) const { return poses_.at(index); }
   // Secondary camera k's extrinsic vertex, or nullptr.
   VertexStereoExtrinsic* extrinsic(int camera) const;
   // The estimates, in the graph's unit.

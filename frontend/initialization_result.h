@@ -22,8 +22,9 @@ struct InitializationResult {
   std::map<int, Eigen::Vector3d> points;                   // by track id
   std::vector<VertexStereoExtrinsic::Vector6> extrinsics;  // [k - 1] for secondary camera k
   // The factor that made the map metric (long-range: kappa |c_cal| / |c|, the
-  // map's unit in metres; 1 for the rigid stereo start), and kappa's relative
-  // standard deviation (0 when kappa is not estimated).
+  // map's unit in metres; 1 for the rigid stereo start), and the relative
+  // standard deviation of the scale it gives (of the metric distance from the
+  // first to the last camera) from the information; 0 when kappa is not estimated.
   double kappa = 1.0;
   double kappaRelativeStd = 0.0;
   SolverSummary summary;                 // the final bundle adjustment

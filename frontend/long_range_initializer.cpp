@@ -33,17 +33,27 @@ void validate(const LongRangeInitializerOptions& o) {
   SolverOptions::fromName(o.solver);  // throws on an unknown name
 }
 
-// kappa's standard deviation, conditioned on the extrinsic centres and on
-// angles at a bound (see the class comment).
-double kappaStandardDeviation(BundleGraph& bundle, const Bounds& bounds) {
+// The relative standard deviation of the metric scale, as that of the metric
+// distance between the first and last cameras, kappa L: along the gauge the
+// map's unit and kappa trade off exactly, so kappa alone would carry the
+// distance prior's own spread, which the product cancels. Conditioned on the
+// extrinsic centres and on angles at a bound (see the class comment).
+double scaleRelativeStd(BundleGraph& bundle, const Bounds& bounds, int lastPose) {
   std::vector<HeldCoordinate> held;
   for (const Bounds::Bound& bound : bounds.all()) {
     const double value = Bounds::value(bound);
     const bool atBound = std::min(value - bound.lower, bound.upper - value) <= kActiveBoundFraction * bound.halfWidth();
     if (bound.index < 3 || atBound) held.push_back({bound.vertex, bound.index});
   }
-  const Eigen::MatrixXd covariance = marginalCovariance(bundle.graph(), *bundle.scale(), held);
-  return std::sqrt(covariance(0, 0));
+  const VertexPose& last = *bundle.pose(lastPose);
+  const Eigen::MatrixXd covariance = marginalCovariance(bundle.graph(), {bundle.scale(), &last}, held);
+  // d(kappa L) / (kappa L) = dkappa / kappa + dL / L; pose 0 is fixed and the
+  // last centre moves by -R^T dt under VertexPose's update.
+  const Eigen::Vector3d span = last.centre() - bundle.pose(0)->centre();
+  Eigen::Matrix<double, 1, 7> jacobian = Eigen::Matrix<double, 1, 7>::Zero();
+  jacobian[0] = 1.0 / bundle.scale()->kappa();
+  jacobian.segment<3>(1) = -span.transpose() * last.rotation().transpose() / span.squaredNorm();
+  return std::sqrt((jacobian * covariance * jacobian.transpose())(0, 0));
 }
 
 }  // namespace
@@ -111,7 +121,7 @@ InitializationResult LongRangeInitializer::initialize(const Rig& rig,
   }
   if (o.estimateScale) {
     try {
-      result.kappaRelativeStd = kappaStandardDeviation(bundle, bounds) / kappa;
+      result.kappaRelativeStd = scaleRelativeStd(bundle, bounds, o.frames - 1);
     } catch (const Error&) {
       result.kappaRelativeStd = std::numeric_limits<double>::infinity();
     }

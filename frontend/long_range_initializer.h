@@ -34,7 +34,7 @@ struct LongRangeInitializerOptions {
   double initialKappa = 1.0;
   // Convergence checks before the map is made metric.
   double maxRmsReprojectionError_px = 2.0;  // per image coordinate, over base and secondary observations
-  double maxKappaRelativeStd = 0.1;         // kappa's standard deviation over its value
+  double maxKappaRelativeStd = 0.1;         // the metric scale's standard deviation over its value
   MonocularOptions monocular;               // its frames, initialBaseline, solver, bundle and seed are set from here
   BundleGraphOptions bundle;
   std::uint64_t seed = 1;
@@ -52,9 +52,11 @@ struct LongRangeInitializerOptions {
 //     between poses 0 and 1 held, since scaling the map by a and kappa by
 //     1 / a changes no projection;
 //  4. checks: the solve converged, the RMS reprojection error is within its
-//     limit, kappa is finite, positive and well conditioned (its standard
-//     deviation from the information, conditioned on the extrinsic centres
-//     and on angles at a bound; see 5 for why the centres);
+//     limit, kappa is finite, positive and well conditioned: the relative
+//     standard deviation of the metric first-to-last camera distance (kappa
+//     times the map's distance, free of the gauge) from the information,
+//     conditioned on the extrinsic centres (see 5) and on angles at a bound,
+//     is small;
 //  5. kappa and the centres c share an exact gauge, (c, kappa) -> (b c, b kappa)
 //     changes no projection, pinned only by c's bounds (to 0.14 % for +-1 mm
 //     on 0.7 m). The metric unit is therefore the calibrated baseline length:

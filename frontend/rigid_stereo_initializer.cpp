@@ -1,5 +1,6 @@
 #include "frontend/rigid_stereo_initializer.h"
 
+#include <cstdio>
 #include <map>
 #include <set>
 #include <string>
@@ -10,6 +11,12 @@
 
 namespace lrsvo {
 namespace {
+
+std::string format(const char* pattern, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
 
 // Triangulates every unmapped track that frame `frame` saw in its base camera
 // and in at least one secondary camera, with the calibrated extrinsics.
@@ -95,6 +102,9 @@ InitializationResult RigidStereoInitializer::initialize(const Rig& rig,
     result.rmsReprojectionError_px = bundle.rmsReprojectionError_px();
     map = bundle.map();
   }
+  if (failure.empty() && !(result.rmsReprojectionError_px <= o.maxRmsReprojectionError_px))
+    failure = "RMS reprojection error " + format("%.3g", result.rmsReprojectionError_px) + " px exceeds " +
+              format("%.3g", o.maxRmsReprojectionError_px) + " px (is the rig deformed?)";
   result.cameraFromWorld = std::move(map.cameraFromWorld);
   result.points = std::move(map.points);
   result.success = failure.empty();

@@ -23,6 +23,9 @@ struct RigidStereoInitializerOptions {
   BundleGraphOptions bundle;
   std::string solver = "lm_schur_dense";
   int maxIterations = 50;  // per bundle adjustment
+  // A final RMS reprojection error (per image coordinate) above this fails:
+  // a rig deformed away from its calibration shows up here.
+  double maxRmsReprojectionError_px = 2.0;
   std::uint64_t seed = 1;
 };
 
@@ -33,8 +36,9 @@ struct RigidStereoInitializerOptions {
 // stereo pair, and a bundle adjustment over the frames so far with the
 // extrinsic held at calibration (pose 0 held; the baseline sets the scale).
 // At long range it legitimately fails (few valid triangulations, poses the
-// wrong points cannot support): the result then says why and keeps the
-// frames reached, so a study can still score the last pose.
+// wrong points cannot support, a final RMS reprojection error above its
+// limit): the result then says why and keeps the frames reached, so a study
+// can still score the last pose.
 class RigidStereoInitializer {
  public:
   explicit RigidStereoInitializer(RigidStereoInitializerOptions options);

@@ -9,12 +9,19 @@
 
 namespace lrsvo {
 
-Eigen::MatrixXd marginalCovariance(Graph& graph, const Vertex& vertex, const std::vector<HeldCoordinate>& held) {
+Eigen::MatrixXd marginalCovariance(Graph& graph, const std::vector<const Vertex*>& vertices,
+                                   const std::vector<HeldCoordinate>& held) {
   BlockSystem system(graph, true);
-  const int target = system.blockOf(&vertex);
-  if (target < 0 || target >= system.freeCount())
-    throw Error("covariance: vertex " + std::to_string(vertex.id()) +
-                " is fixed, marginalised or on no edge; expected a free vertex");
+  std::vector<int> targets;
+  int size = 0;
+  for (const Vertex* vertex : vertices) {
+    const int block = system.blockOf(vertex);
+    if (block < 0 || block >= system.freeCount())
+      throw Error("covariance: vertex " + std::to_string(vertex->id()) +
+                  " is fixed, marginalised or on no edge; expected a free vertex");
+    targets.push_back(block);
+    size += system.dim(block);
+  }
   system.fill(1);
   for (const HeldCoordinate& h : held) {
     const int block = system.blockOf(h.vertex);
@@ -53,10 +60,16 @@ Eigen::MatrixXd marginalCovariance(Graph& graph, const Vertex& vertex, const std
   const Eigen::LDLT<Eigen::MatrixXd> factor(reduced);
   if (factor.info() != Eigen::Success || !(factor.vectorD().array() > 0.0).all())
     throw Error("covariance: the information of the free vertices is singular (an unfixed gauge?)");
-  const int d = system.dim(target);
-  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(n, d);
-  unit.block(system.offset(target), 0, d, d).setIdentity();
-  return factor.solve(unit).middleRows(system.offset(target), d);
+  // Columns of the inverse for the requested coordinates, then their rows.
+  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(n, size);
+  for (int t = 0, column = 0; t < static_cast<int>(targets.size()); column += system.dim(targets[t++]))
+    unit.block(system.offset(targets[t]), column, system.dim(targets[t]), system.dim(targets[t])).setIdentity();
+  const Eigen::MatrixXd columns = factor.solve(unit);
+  Eigen::MatrixXd covariance(size, size);
+  for (int t = 0, row = 0; t < static_cast<int>(targets.size()); row += system.dim(targets[t++]))
+    covariance.middleRows(row, system.dim(targets[t])) =
+        columns.middleRows(system.offset(targets[t]), system.dim(targets[t]));
+  return covariance;
 }
 
 }  // namespace lrsvo

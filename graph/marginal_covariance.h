@@ -14,15 +14,17 @@ struct HeldCoordinate {
   int coordinate;
 };
 
-// The covariance of a free vertex's update at the current estimates: the
-// corresponding block of the inverse Gauss-Newton information of the whole
-// graph, marginalised vertices (points) eliminated by the Schur complement.
+// The joint covariance of free vertices' updates at the current estimates,
+// in the order given: the corresponding blocks of the inverse Gauss-Newton
+// information of the whole graph, marginalised vertices (points) eliminated
+// by the Schur complement.
 // Held coordinates are conditioned on (treated as known): directions that
 // only a bound or a gauge determines would otherwise make the information
 // singular. The reduced system of the non-marginalised vertices is formed
 // densely, so this suits windows, not large batches. Throws lrsvo::Error
-// when the vertex is fixed or not on an edge, or when the information is not
-// positive definite.
-Eigen::MatrixXd marginalCovariance(Graph& graph, const Vertex& vertex, const std::vector<HeldCoordinate>& held = {});
+// when a vertex is fixed, marginalised or not on an edge, or when the
+// information is not positive definite.
+Eigen::MatrixXd marginalCovariance(Graph& graph, const std::vector<const Vertex*>& vertices,
+                                   const std::vector<HeldCoordinate>& held = {});
 
 }  // namespace lrsvo

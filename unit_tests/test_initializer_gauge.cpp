@@ -58,7 +58,8 @@ TEST(InitializerGauge, MarginalCovarianceEqualsTheDenseInverse) {
   options.startScale = 0.8;
   WindowProblem problem = makeWindowProblem(options);
   const std::vector<HeldCoordinate> held = {{problem.extrinsic, 0}, {problem.extrinsic, 1}, {problem.extrinsic, 2}};
-  const Eigen::MatrixXd covariance = marginalCovariance(problem.graph, *problem.scale, held);
+  const Eigen::MatrixXd covariance = marginalCovariance(problem.graph, {problem.scale}, held);
+  const Eigen::MatrixXd joint = marginalCovariance(problem.graph, {problem.poses[3], problem.scale}, held);
 
   BlockSystem system(problem.graph, true);
   system.fill(1);
@@ -78,6 +79,15 @@ TEST(InitializerGauge, MarginalCovarianceEqualsTheDenseInverse) {
   ASSERT_EQ(covariance.rows(), 1);
   EXPECT_GT(covariance(0, 0), 0.0);
   EXPECT_NEAR(covariance(0, 0), inverse(scaleRow, scaleRow), 1e-6 * inverse(scaleRow, scaleRow));
+  // A joint request returns the blocks and their correlation in the order asked.
+  const int poseOffset = system.offset(system.blockOf(problem.poses[3]));
+  ASSERT_EQ(joint.rows(), 7);
+  EXPECT_NEAR(joint(6, 6), covariance(0, 0), 1e-9 * covariance(0, 0));
+  for (int i = 0; i < 6; ++i) {
+    const int row = static_cast<int>(std::find(kept.begin(), kept.end(), poseOffset + i) - kept.begin());
+    EXPECT_NEAR(joint(i, 6), inverse(row, scaleRow), 1e-6 * std::sqrt(inverse(row, row) * inverse(scaleRow, scaleRow)));
+    EXPECT_NEAR(joint(i, i), inverse(row, row), 1e-6 * inverse(row, row));
+  }
 }
 
 TEST(InitializerGauge, MarginalCovarianceRefusesAFixedVertex) {
@@ -87,7 +97,7 @@ TEST(InitializerGauge, MarginalCovarianceRefusesAFixedVertex) {
   options.minTrackLength = 2;
   options.maxTrackLength = 3;
   WindowProblem problem = makeWindowProblem(options);
-  EXPECT_THROW(marginalCovariance(problem.graph, *problem.poses[0]), Error);
+  EXPECT_THROW(marginalCovariance(problem.graph, {problem.poses[0]}), Error);
 }
 
 }  // namespace
