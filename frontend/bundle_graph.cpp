@@ -1,0 +1,156 @@
+#include "frontend/bundle_graph.h"
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "edges/edge_centre_distance.h"
+#include "graph/error.h"
+#include "graph/robust_kernel.h"
+
+namespace lrsvo {
+namespace {
+
+// The prior's sigma as a fraction of the distance. The data cost does not
+// change along the gauge (scaling the map about the held first pose), so at
+// the optimum the prior holds the distance exactly whatever its weight. The
+// weight matters for conditioning only: a stiff prior adds its curvature to
+// diag(H) of every translation coordinate of the pose, and LM's
+// multiplicative damping then freezes them. 1 % weighs like a few hundred
+// observations of a point at ~15 units.
+constexpr double kDistancePriorSigma = 1e-2;
+
+}  // namespace
+
+void holdCentreDistance(Graph& graph, VertexPose* a, VertexPose* b) {
+  const double distance = (b->centre() - a->centre()).norm();
+  if (!(distance > 0.0))
+    throw Error("bundle graph: poses " + std::to_string(a->id()) + " and " + std::to_string(b->id()) +
+                " share a centre; their distance cannot fix the unit");
+  auto edge = std::make_unique<EdgeCentreDistance>();
+  edge->setVertex(0, a);
+  edge->setVertex(1, b);
+  edge->setMeasurement(Eigen::Matrix<double, 1, 1>(distance));
+  const double sigma = kDistancePriorSigma * distance;
+  edge->setInformation(Eigen::Matrix<double, 1, 1>(1.0 / (sigma * sigma)));
+  graph.addEdge(std::move(edge));
+}
+
+BundleGraph::BundleGraph(const Rig& rig, const SparseMap& map, int fixedPoses, BundleGraphOptions options)
+    : rig_(rig), options_(std::move(options)) {
+  rig.validate();
+  extrinsics_.assign(rig.secondaryCount(), nullptr);
+  if (!(options_.sigma_px > 0.0)) throw Error("bundle graph: sigma_px must be positive");
+  for (std::size_t i = 0; i < map.cameraFromWorld.size(); ++i) {
+    auto pose = std::make_unique<VertexPose>(nextId_++, map.cameraFromWorld[i]);
+    pose->setFixed(static_cast<int>(i) < fixedPoses);
+    poses_.push_back(graph_.addVertex(std::move(pose)));
+  }
+  for (const auto& [track, point] : map.points)
+    points_[track] = graph_.addVertex(std::make_unique<VertexPoint3>(nextId_++, point));
+}
+
+VertexStereoExtrinsic* BundleGraph::addExtrinsic(int camera, const Vector6& value, bool fixed) {
+  if (camera < 1 || camera > rig_.secondaryCount())
+    throw Error("bundle graph: camera " + std::to_string(camera) + " is not a secondary camera of the rig");
+  auto vertex = std::make_unique<VertexStereoExtrinsic>(nextId_++, value);
+  vertex->setFixed(fixed);
+  extrinsics_[camera - 1] = graph_.addVertex(std::move(vertex));
+  return extrinsics_[camera - 1];
+}
+
+VertexScale* BundleGraph::addScale(double kappa) {
+  scale_ = graph_.addVertex(std::make_unique<VertexScale>(nextId_++, kappa));
+  return scale_;
+}
+
+void BundleGraph::holdDistance(int poseA, int poseB) { holdCentreDistance(graph_, poses_.at(poseA), poses_.at(poseB)); }
+
+int BundleGraph::addObservations(int frame, const FrameObservations& observations) {
+  VertexPose* pose = poses_.at(frame);
+  const Eigen::Matrix2d information = Eigen::Matrix2d::Identity() / (options_.sigma_px * options_.sigma_px);
+  auto finish = [&](auto edge, const Observation& observation) {
+    edge->setMeasurement(observation.pixel);
+    edge->setInformation(information);
+    if (!options_.robustKernel.empty())
+      edge->setRobustKernel(makeRobustKernel(options_.robustKernel, options_.robustKernelDelta));
+    return graph_.addEdge(std::move(edge));
+  };
+  int added = 0;
+  for (const Observation& observation : observations.observations) {
+    auto point = points_.find(observation.track);
+    if (point == points_.end()) continue;
+    if (observation.camera == 0) {
+      auto edge = std::make_unique<EdgeProjectBase>(rig_.cameras[0].intrinsics);
+      edge->setVertex(0, pose);
+      edge->setVertex(1, point->second);
+      baseEdges_.push_back(finish(std::move(edge), observation));
+      ++added;
+      continue;
+    }
+    VertexStereoExtrinsic* extrinsic = this->extrinsic(observation.camera);
+    if (!extrinsic) continue;
+    const SecondaryCamera camera{observation.camera, rig_.cameras[observation.camera].intrinsics};
+    if (scale_) {
+      auto edge = std::make_unique<EdgeProjectSecondaryScaled>(camera);
+      edge->setVertex(0, pose);
+      edge->setVertex(1, point->second);
+      edge->setVertex(2, extrinsic);
+      edge->setVertex(3, scale_);
+      scaledEdges_.push_back(finish(std::move(edge), observation));
+    } else {
+      auto edge = std::make_unique<EdgeProjectSecondary>(camera);
+      edge->setVertex(0, pose);
+      edge->setVertex(1, point->second);
+      edge->setVertex(2, extrinsic);
+      secondaryEdges_.push_back(finish(std::move(edge), observation));
+    }
+    ++added;
+  }
+  return added;
+}
+
+Bounds BundleGraph::extrinsicBounds() const {
+  Bounds bounds;
+  for (int k = 1; k <= rig_.secondaryCount(); ++k)
+    if (extrinsics_[k - 1] && !extrinsics_[k - 1]->fixed()) rig_.addBounds(bounds, extrinsics_[k - 1], k);
+  return bounds;
+}
+
+VertexStereoExtrinsic* BundleGraph::extrinsic(int camera) const {
+  if (camera < 1 || camera > rig_.secondaryCount()) return nullptr;
+  return extrinsics_[camera - 1];
+}
+
+SparseMap BundleGraph::map() const {
+  SparseMap map;
+  for (const VertexPose* pose : poses_) map.cameraFromWorld.push_back(pose->cameraFromWorld());
+  for (const auto& [track, point] : points_) map.points[track] = point->estimate();
+  return map;
+}
+
+std::vector<BundleGraph::Vector6> BundleGraph::extrinsics() const {
+  std::vector<Vector6> values;
+  for (int k = 1; k <= rig_.secondaryCount(); ++k)
+    values.push_back(extrinsics_[k - 1] ? extrinsics_[k - 1]->estimate() : rig_.extrinsics[k - 1]);
+  return values;
+}
+
+double BundleGraph::rmsReprojectionError_px() const {
+  double sum = 0.0;
+  std::size_t count = 0;
+  auto accumulate = [&](const auto& edges) {
+    for (const auto* edge : edges) {
+      Eigen::Vector2d residual;
+      edge->computeResidual(residual);
+      sum += residual.squaredNorm();
+      count += 2;
+    }
+  };
+  accumulate(baseEdges_);
+  accumulate(secondaryEdges_);
+  accumulate(scaledEdges_);
+  return count ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
+}
+
+}  // namespace lrsvo

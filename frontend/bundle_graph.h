@@ -1,0 +1,80 @@
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "constraints/bounds.h"
+#include "edges/edge_project_base.h"
+#include "edges/edge_project_secondary.h"
+#include "frontend/observations.h"
+#include "frontend/rig.h"
+#include "frontend/sparse_map.h"
+#include "graph/graph.h"
+#include "vertices/vertex_point3.h"
+#include "vertices/vertex_pose.h"
+#include "vertices/vertex_scale.h"
+#include "vertices/vertex_stereo_extrinsic.h"
+
+namespace lrsvo {
+
+// Holds the unit of a map whose scale is free (a monocular map): a prior
+// keeps the distance between the centres of a and b at its current value.
+void holdCentreDistance(Graph& graph, VertexPose* a, VertexPose* b);
+
+struct BundleGraphOptions {
+  double sigma_px = 1.0;               // measurement noise: information = I / sigma^2
+  std::string robustKernel = "Huber";  // "" for none, else a registered kernel
+  double robustKernelDelta = 3.0;      // in sigmas (the whitened residual norm)
+};
+
+// A bundle-adjustment graph over a sparse map and the rig's observations of
+// it, as the initialisers build it: one VertexPose per frame (base camera),
+// one VertexPoint3 per mapped track, optionally one VertexStereoExtrinsic per
+// secondary camera and one VertexScale (kappa) shared by all of them.
+class BundleGraph {
+ public:
+  using Vector6 = VertexStereoExtrinsic::Vector6;
+
+  // Poses and points from the map; the first `fixedPoses` poses are held.
+  BundleGraph(const Rig& rig, const SparseMap& map, int fixedPoses, BundleGraphOptions options = {});
+
+  // Secondary camera k's extrinsic (k >= 1), held at `value` when fixed.
+  VertexStereoExtrinsic* addExtrinsic(int camera, const Vector6& value, bool fixed);
+  // kappa (method.md eq. 5) on every secondary edge added after this call.
+  VertexScale* addScale(double kappa);
+  // Holds the map's unit at the distance between poses a and b (holdCentreDistance).
+  void holdDistance(int poseA, int poseB);
+  // One edge per observation of frame `frame` whose track is mapped: base
+  // observations always, secondary ones when that camera's extrinsic was
+  // added. Returns the number of edges added.
+  int addObservations(int frame, const FrameObservations& observations);
+  // The rig's box around calibration on every (free) extrinsic vertex.
+  Bounds extrinsicBounds() const;
+
+  Graph& graph() { return graph_; }
+  VertexScale* scale() const { return scale_; }
+  const VertexPose* pose(int index) const { return poses_.at(index); }
+  // Secondary camera k's extrinsic vertex, or nullptr.
+  VertexStereoExtrinsic* extrinsic(int camera) const;
+  // The estimates, in the graph's unit.
+  SparseMap map() const;
+  std::vector<Vector6> extrinsics() const;
+  // RMS reprojection error per image coordinate over every projection edge, in pixels.
+  double rmsReprojectionError_px() const;
+
+ private:
+  const Rig& rig_;
+  BundleGraphOptions options_;
+  Graph graph_;
+  int nextId_ = 0;
+  std::vector<VertexPose*> poses_;
+  std::map<int, VertexPoint3*> points_;
+  std::vector<VertexStereoExtrinsic*> extrinsics_;  // [k - 1], nullptr when not added
+  VertexScale* scale_ = nullptr;
+  std::vector<const EdgeProjectBase*> baseEdges_;
+  std::vector<const EdgeProjectSecondary*> secondaryEdges_;
+  std::vector<const EdgeProjectSecondaryScaled*> scaledEdges_;
+};
+
+}  // namespace lrsvo

@@ -1,0 +1,154 @@
+#include "frontend/two_view.h"
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <random>
+#include <string>
+#include <utility>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/core.hpp>
+
+#include "edges/edge_project_base.h"
+#include "frontend/bundle_graph.h"
+#include "frontend/triangulation.h"
+#include "graph/optimizer.h"
+
+namespace lrsvo {
+namespace {
+
+// The pixels of one camera's observations, by track (sorted, so the
+// correspondences come out in the same order every time).
+std::map<int, Eigen::Vector2d> pixelsByTrack(const FrameObservations& frame, int camera) {
+  std::map<int, Eigen::Vector2d> pixels;
+  for (const Observation& observation : frame.observations)
+    if (observation.camera == camera) pixels[observation.track] = observation.pixel;
+  return pixels;
+}
+
+cv::Point2d normalised(const Eigen::Vector2d& pixel, const PinholeIntrinsics& k) {
+  return {(pixel.x() - k.cx) / k.fx, (pixel.y() - k.cy) / k.fy};
+}
+
+// Bundle adjustment of the pair: camera a held at the origin, the distance to
+// b held at 1 (the pair's unit), the inliers' points triangulated first.
+void refine(TwoViewResult& result, const std::map<int, Eigen::Vector2d>& pixelsA,
+            const std::map<int, Eigen::Vector2d>& pixelsB, const PinholeIntrinsics& intrinsics,
+            const std::string& solver) {
+  Graph graph;
+  VertexPose* a = graph.addVertex(std::make_unique<VertexPose>(0));
+  a->setFixed(true);
+  VertexPose* b = graph.addVertex(std::make_unique<VertexPose>(1, result.bFromA()));
+  holdCentreDistance(graph, a, b);
+  int points = 0;
+  for (int track : result.inlierTracks) {
+    const Eigen::Vector2d& pixelA = pixelsA.at(track);
+    const Eigen::Vector2d& pixelB = pixelsB.at(track);
+    const TriangulationResult point =
+        triangulate({{a->cameraFromWorld(), intrinsics, pixelA}, {b->cameraFromWorld(), intrinsics, pixelB}});
+    if (!point.valid) continue;
+    VertexPoint3* vertex = graph.addVertex(std::make_unique<VertexPoint3>(2 + points++, point.point));
+    for (auto [pose, pixel] : {std::pair{a, pixelA}, std::pair{b, pixelB}}) {
+      auto edge = std::make_unique<EdgeProjectBase>(intrinsics);
+      edge->setVertex(0, pose);
+      edge->setVertex(1, vertex);
+      edge->setMeasurement(pixel);
+      graph.addEdge(std::move(edge));
+    }
+  }
+  if (points < 5) return;  // nothing to refine with; keep RANSAC's pose
+  Optimizer(SolverOptions::fromName(solver)).optimize(graph);
+  result.rotation = b->rotation();
+  result.translation = b->translation().normalized();
+}
+
+TwoViewResult failed(TwoViewResult result, const std::string& why) {
+  result.success = false;
+  result.failure = "two-view: " + why;
+  return result;
+}
+
+}  // namespace
+
+Eigen::Isometry3d TwoViewResult::bFromA(double distance) const {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = rotation;
+  pose.translation() = distance * translation;
+  return pose;
+}
+
+TwoViewResult estimateTwoView(const FrameObservations& a, const FrameObservations& b,
+                              const PinholeIntrinsics& intrinsics, const TwoViewOptions& options) {
+  TwoViewResult result;
+  const std::map<int, Eigen::Vector2d> pixelsA = pixelsByTrack(a, options.camera);
+  const std::map<int, Eigen::Vector2d> pixelsB = pixelsByTrack(b, options.camera);
+  std::vector<int> tracks;
+  std::vector<cv::Point2d> pointsA, pointsB;
+  for (const auto& [track, pixel] : pixelsA) {
+    auto it = pixelsB.find(track);
+    if (it == pixelsB.end()) continue;
+    tracks.push_back(track);
+    pointsA.push_back(normalised(pixel, intrinsics));
+    pointsB.push_back(normalised(it->second, intrinsics));
+  }
+  result.correspondences = static_cast<int>(tracks.size());
+  if (result.correspondences < std::max(5, options.minInliers))
+    return failed(result, std::to_string(result.correspondences) + " shared tracks, need at least " +
+                              std::to_string(std::max(5, options.minInliers)));
+
+  // OpenCV's RANSAC draws its samples from a fixed internal stream
+  // (cv::setRNGSeed does not reach it), so the seed acts through the order of
+  // the correspondences: each attempt shuffles them. Near-planar ground seen
+  // from far away lets RANSAC settle on the twin of the true essential
+  // matrix (motion along the ground's normal) with nearly as many inliers
+  // under the Sampson distance; only the cheirality test tells them apart, so
+  // the attempt with the most inliers in front of both cameras wins.
+  const cv::Matx33d identity = cv::Matx33d::eye();
+  std::mt19937_64 rng(options.seed);
+  std::vector<int> order(tracks.size());
+  std::iota(order.begin(), order.end(), 0);
+  int bestInFront = -1;
+  cv::Mat rotation, translation, inlierMask;
+  for (int attempt = 0; attempt < options.attempts; ++attempt) {
+    std::shuffle(order.begin(), order.end(), rng);
+    std::vector<cv::Point2d> shuffledA, shuffledB;
+    for (int i : order) {
+      shuffledA.push_back(pointsA[i]);
+      shuffledB.push_back(pointsB[i]);
+    }
+    cv::Mat mask;
+    const cv::Mat essential = cv::findEssentialMat(shuffledA, shuffledB, identity, cv::RANSAC, options.confidence,
+                                                   options.ransacThreshold_px / intrinsics.fx, mask);
+    // findEssentialMat may return several stacked 3x3 solutions; the first is RANSAC's best.
+    if (essential.rows < 3 || essential.cols != 3) continue;
+    cv::Mat r, t;
+    const int inFront = cv::recoverPose(essential.rowRange(0, 3), shuffledA, shuffledB, identity, r, t, mask);
+    if (inFront <= bestInFront) continue;
+    bestInFront = inFront;
+    rotation = r;
+    translation = t;
+    inlierMask = cv::Mat::zeros(static_cast<int>(tracks.size()), 1, CV_8U);
+    for (std::size_t i = 0; i < order.size(); ++i)
+      inlierMask.at<unsigned char>(order[i]) = mask.at<unsigned char>(static_cast<int>(i));
+  }
+  if (bestInFront < 0) return failed(result, "no essential matrix found");
+  if (bestInFront < options.minInliers)
+    return failed(result, std::to_string(bestInFront) + " of " + std::to_string(result.correspondences) +
+                              " correspondences are inliers in front of both cameras, need " +
+                              std::to_string(options.minInliers) + " (too little parallax or motion?)");
+
+  for (int r = 0; r < 3; ++r) {
+    result.translation[r] = translation.at<double>(r);
+    for (int c = 0; c < 3; ++c) result.rotation(r, c) = rotation.at<double>(r, c);
+  }
+  result.translation.normalize();
+  for (std::size_t i = 0; i < tracks.size(); ++i)
+    if (inlierMask.at<unsigned char>(static_cast<int>(i))) result.inlierTracks.push_back(tracks[i]);
+  if (options.refine) refine(result, pixelsA, pixelsB, intrinsics, options.refineSolver);
+  result.success = true;
+  return result;
+}
+
+}  // namespace lrsvo

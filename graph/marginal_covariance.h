@@ -1,0 +1,30 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "graph/graph.h"
+
+namespace lrsvo {
+
+// One scalar parameter of a vertex (coordinate of its update).
+struct HeldCoordinate {
+  const Vertex* vertex;
+  int coordinate;
+};
+
+// The joint covariance of free vertices' updates at the current estimates,
+// in the order given: the corresponding blocks of the inverse Gauss-Newton
+// information of the whole graph, marginalised vertices (points) eliminated
+// by the Schur complement.
+// Held coordinates are conditioned on (treated as known): directions that
+// only a bound or a gauge determines would otherwise make the information
+// singular. The reduced system of the non-marginalised vertices is formed
+// densely, so this suits windows, not large batches. Throws lrsvo::Error
+// when a vertex is fixed, marginalised or not on an edge, or when the
+// information is not positive definite.
+Eigen::MatrixXd marginalCovariance(Graph& graph, const std::vector<const Vertex*>& vertices,
+                                   const std::vector<HeldCoordinate>& held = {});
+
+}  // namespace lrsvo

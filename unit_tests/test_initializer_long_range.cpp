@@ -1,0 +1,123 @@
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "frontend/long_range_initializer.h"
+#include "frontend/monocular_initializer.h"
+#include "unit_tests/initializer_flight.h"
+
+// Measured on initializationFlight (unit_tests/initializer_flight.h) at
+// 100 m, seeds 1-5, log barrier: final camera position errors 0.28, 0.71,
+// 1.84, 1.66, 3.27 m (0.5-5.5 % of the 60 m flown; RMS 3.1 %), with the
+// scale's relative standard deviation from the information 3.5-3.9 %. The
+// error is the statistical one the information allows: a pitch error of the
+// secondary camera shifts every disparity alike (1.7 px per mrad against
+// 11.7 px of disparity at 100 m) and only the terrain's depth variation tells
+// it from a change of scale (1000 features per frame instead of 300 gave
+// 2.4 %). Hence the tolerance: within 3 of those standard deviations, and
+// within the paper's 5 m at 100 m (Fig. 17). Without kappa, from half the
+// true scale, the same batch under the log barrier ends 27-46 % off (the
+// pitch absorbs the scale, as in test_scale_init.cpp); under gradient
+// projection it does come back from 0.25-0.5 but not from 1.5 (39-42 %).
+
+namespace lrsvo::test {
+namespace {
+
+TEST(InitializerLongRange, RecoversMetricScaleAndExtrinsicAt100m) {
+  const SimulatedSequence sequence = initializationFlight(100.0, 1);
+  const InitializationResult result = LongRangeInitializer({}).initialize(sequence.rig, sequence.frames);
+  ASSERT_TRUE(result.success) << result.failure;
+  ASSERT_EQ(result.cameraFromWorld.size(), 10u);
+  EXPECT_TRUE(result.cameraFromWorld[0].isApprox(Eigen::Isometry3d::Identity(), 1e-12));
+  const double flown = distanceFlown(sequence, 10);
+  const double error = finalPositionError(result, sequence);
+  EXPECT_LT(error, 3.0 * result.kappaRelativeStd * flown);
+  EXPECT_LT(error, 5.0);
+  EXPECT_GT(result.kappaRelativeStd, 0.01);  // the information is finite: a 0 would mean a gauge was missed
+  EXPECT_LT(result.kappaRelativeStd, 0.06);
+  // kappa is the first pair's distance in metres (initialBaseline = 1).
+  const double firstPair = distanceFlown(sequence, 2);
+  EXPECT_NEAR(result.kappa, firstPair, 3.0 * result.kappaRelativeStd * firstPair);
+  EXPECT_LT(result.rmsReprojectionError_px, 1.1);  // 1 px noise per coordinate
+
+  // The extrinsic stays inside the rig's box, and its pitch, the parameter
+  // that trades off against scale, lands near the truth (within 1 mrad).
+  const auto& calibrated = sequence.rig.extrinsics[0];
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_GE(result.extrinsics[0][i], calibrated[i] - sequence.rig.tolerance[i] - 1e-9) << "parameter " << i;
+    EXPECT_LE(result.extrinsics[0][i], calibrated[i] + sequence.rig.tolerance[i] + 1e-9) << "parameter " << i;
+  }
+  double truePitch = 0.0;
+  for (const auto& extrinsics : sequence.trueExtrinsics) truePitch += extrinsics[0][4] / 10.0;
+  EXPECT_NEAR(result.extrinsics[0][4], truePitch, 1e-3);
+}
+
+TEST(InitializerLongRange, WithoutKappaFromHalfTheScaleDoesWorse) {
+  const SimulatedSequence sequence = initializationFlight(100.0, 1);
+  LongRangeInitializerOptions options;
+  options.initialBaseline = 0.5 * distanceFlown(sequence, 2);  // start scale 0.5
+  const InitializationResult withKappa = LongRangeInitializer(options).initialize(sequence.rig, sequence.frames);
+  options.estimateScale = false;
+  const InitializationResult withoutKappa = LongRangeInitializer(options).initialize(sequence.rig, sequence.frames);
+  ASSERT_EQ(withoutKappa.cameraFromWorld.size(), 10u) << withoutKappa.failure;
+  ASSERT_TRUE(withKappa.success) << withKappa.failure;
+  // kappa finds the map's unit from any start: twice the first pair's distance in map units.
+  EXPECT_NEAR(withKappa.kappa * options.initialBaseline, distanceFlown(sequence, 2), 0.1 * distanceFlown(sequence, 2));
+  const double flown = distanceFlown(sequence, 10);
+  EXPECT_LT(finalPositionError(withKappa, sequence), 0.06 * flown);
+  EXPECT_GT(finalPositionError(withoutKappa, sequence), 0.15 * flown);
+  EXPECT_GT(finalPositionError(withoutKappa, sequence), 3.0 * finalPositionError(withKappa, sequence));
+}
+
+TEST(InitializerLongRange, MonocularMapHasTheRightShapeAtUnitScale) {
+  const SimulatedSequence sequence = initializationFlight(100.0, 2);
+  MonocularOptions options;
+  options.initialBaseline = 2.0;
+  const MonocularResult mono = buildMonocularMap(sequence.rig, sequence.frames, options);
+  ASSERT_TRUE(mono.success) << mono.failure;
+  const auto& poses = mono.map.cameraFromWorld;
+  ASSERT_EQ(poses.size(), 10u);
+  EXPECT_NEAR((poses[1].inverse().translation() - poses[0].inverse().translation()).norm(), 2.0, 1e-9);
+  // Scaled to the truth by the first pair, every camera lies within 10 % of
+  // the first pair's 6.7 m of where it should (measured: < 2 %).
+  const std::vector<Eigen::Isometry3d> truth = alignToFirstCamera(sequence.trueCameraFromWorld);
+  const double toMetres = distanceFlown(sequence, 2) / 2.0;
+  for (std::size_t i = 0; i < poses.size(); ++i)
+    EXPECT_LT((toMetres * poses[i].inverse().translation() - truth[i].inverse().translation()).norm(),
+              0.1 * distanceFlown(sequence, 2) + 0.02 * distanceFlown(sequence, i + 1))
+        << "frame " << i;
+}
+
+TEST(InitializerLongRange, SameSeedSameResult) {
+  const SimulatedSequence sequence = initializationFlight(70.0, 3);
+  LongRangeInitializerOptions options;
+  options.constraintMethod = "gradient_projection";
+  const InitializationResult first = LongRangeInitializer(options).initialize(sequence.rig, sequence.frames);
+  const InitializationResult second = LongRangeInitializer(options).initialize(sequence.rig, sequence.frames);
+  ASSERT_TRUE(first.success) << first.failure;
+  ASSERT_EQ(first.cameraFromWorld.size(), second.cameraFromWorld.size());
+  for (std::size_t i = 0; i < first.cameraFromWorld.size(); ++i)
+    EXPECT_TRUE(first.cameraFromWorld[i].isApprox(second.cameraFromWorld[i], 0.0)) << "frame " << i;
+  EXPECT_EQ(first.kappa, second.kappa);
+  EXPECT_EQ(first.extrinsics[0], second.extrinsics[0]);
+}
+
+TEST(InitializerLongRange, ReportsWhyItFails) {
+  // 20 m up, the 15 m footprint spans two frames 6.7 m apart but never
+  // three: nothing mapped from the pair is seen by the next frame.
+  const SimulatedSequence low = initializationFlight(20.0, 1);
+  const InitializationResult result = LongRangeInitializer({}).initialize(low.rig, low.frames);
+  EXPECT_FALSE(result.success);
+  EXPECT_NE(result.failure.find("mapped points"), std::string::npos) << result.failure;
+  EXPECT_TRUE(result.cameraFromWorld.empty());  // no metric scale without the batch
+
+  const SimulatedSequence sequence = initializationFlight(100.0, 1);
+  const std::vector<FrameObservations> five(sequence.frames.begin(), sequence.frames.begin() + 5);
+  EXPECT_NE(LongRangeInitializer({}).initialize(sequence.rig, five).failure.find("5 frames given"), std::string::npos);
+  LongRangeInitializerOptions unknown;
+  unknown.constraintMethod = "no_such_method";
+  EXPECT_THROW(LongRangeInitializer{unknown}, Error);
+}
+
+}  // namespace
+}  // namespace lrsvo::test
