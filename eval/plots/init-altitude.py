@@ -20,7 +20,8 @@ for method, colour, style in (("long-range", "C0", "-"), ("rigid-stereo", "C3", 
         axis.plot(altitude, values, style, color=colour, marker="o", label=method + " (mean)")
         if std and "exact" not in method:
             spread = [r[std] for r in curve]
-            axis.fill_between(altitude, [v - s for v, s in zip(values, spread)],
+            # log axes: the band's lower edge is clipped above zero
+            axis.fill_between(altitude, [max(v - s, 0.1 * v) for v, s in zip(values, spread)],
                               [v + s for v, s in zip(values, spread)], color=colour, alpha=0.15)
         if "exact" not in method:
             axis.plot(altitude, [r[worst] for r in curve], ":", color=colour, label=method + " (worst trial)")
@@ -33,9 +34,9 @@ percent.axhline(2.0, color="k", lw=0.8, ls="-.", label="2 % of distance flown")
 metres.axhline(5.0, color="grey", lw=0.8, ls="-.", label="5 m (paper, 100 m)")
 metres.axvline(100.0, color="grey", lw=0.5)
 percent.axvline(100.0, color="grey", lw=0.5)
-metres.set(xlabel="altitude (m)", ylabel="final position error (m)", yscale="symlog",
+metres.set(xlabel="altitude (m)", ylabel="final position error (m)", yscale="log",
            title="(a) error of the last camera, %d trials" % rows[0]["trials"])
-percent.set(xlabel="altitude (m)", ylabel="final position error (% of distance flown)", yscale="symlog",
+percent.set(xlabel="altitude (m)", ylabel="final position error (% of distance flown)", yscale="log",
             title="(b) relative to the distance flown")
 for axis in (metres, percent):
     axis.grid(True, alpha=0.3)

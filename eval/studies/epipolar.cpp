@@ -4,24 +4,18 @@
 
 #include <cmath>
 
-#include "eval/deformed_pair.h"
 #include "eval/paper_cameras.h"
+#include "eval/studies/section2_setup.h"
 #include "eval/studies/study_support.h"
 #include "eval/study.h"
 
 namespace lrsvo {
 namespace {
 
-constexpr double kBaseline_m = 0.7, kDepth_m = 100.0;
-constexpr double kMaxTranslation_m = 0.1, kMaxRotation_deg = 0.5;
-constexpr int kStepsPerSide = 50;
-constexpr double kCheckRotation_deg = 0.2, kCheckTranslation_m = 0.05;
+using namespace section2;
 
 double epipolarError(double focal_px, const Deformation& deformation) {
-  const VertexStereoExtrinsic::Vector6 calibration = verticalPairCalibration(kBaseline_m);
-  return deformedPairErrors(paperIntrinsics(focal_px), calibration, deformedExtrinsic(calibration, deformation),
-                            Eigen::Vector3d(0.0, 0.0, kDepth_m))
-      .epipolar_px;
+  return errorsOf(focal_px, deformation).epipolar_px;
 }
 
 StudyReport runEpipolar(const StudyOptions& options) {

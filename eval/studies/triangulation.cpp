@@ -4,24 +4,15 @@
 
 #include <cmath>
 
-#include "eval/deformed_pair.h"
 #include "eval/paper_cameras.h"
+#include "eval/studies/section2_setup.h"
 #include "eval/studies/study_support.h"
 #include "eval/study.h"
 
 namespace lrsvo {
 namespace {
 
-constexpr double kBaseline_m = 0.7, kDepth_m = 100.0;
-constexpr double kMaxTranslation_m = 0.1, kMaxRotation_deg = 0.5;
-constexpr int kStepsPerSide = 50;
-constexpr double kCheckRotation_deg = 0.2, kCheckTranslation_m = 0.05;
-
-DeformedPairErrors errorsOf(double focal_px, const Deformation& deformation) {
-  const VertexStereoExtrinsic::Vector6 calibration = verticalPairCalibration(kBaseline_m);
-  return deformedPairErrors(paperIntrinsics(focal_px), calibration, deformedExtrinsic(calibration, deformation),
-                            Eigen::Vector3d(0.0, 0.0, kDepth_m));
-}
+using namespace section2;
 
 std::string number(double value) { return std::isfinite(value) ? study_support::format("%.10g", value) : ""; }
 
