@@ -32,10 +32,12 @@ void printExtrinsics(const SimulatedSequence& sequence, const InitializationResu
   VertexStereoExtrinsic::Vector6 truth = VertexStereoExtrinsic::Vector6::Zero();
   for (const auto& frame : sequence.trueExtrinsics) truth += frame[0] / sequence.trueExtrinsics.size();
   const VertexStereoExtrinsic::Vector6& tolerance = sequence.rig.tolerance;
-  std::printf("  stereo extrinsic, change from calibration   x (mm)   y (mm)   z (mm)  roll (mrad) pitch (mrad) yaw (mrad)\n");
+  std::printf(
+      "  stereo extrinsic, change from calibration   x (mm)   y (mm)   z (mm)   about x (mrad) about y (mrad) about z "
+      "(mrad)\n");
   auto row = [](const char* what, const VertexStereoExtrinsic::Vector6& d) {
-    std::printf("    %-40s %8.3f %8.3f %8.3f %12.3f %12.3f %10.3f\n", what, 1e3 * d[0], 1e3 * d[1], 1e3 * d[2], 1e3 * d[3],
-                1e3 * d[4], 1e3 * d[5]);
+    std::printf("    %-40s %8.3f %8.3f %8.3f %16.3f %14.3f %14.3f\n", what, 1e3 * d[0], 1e3 * d[1], 1e3 * d[2],
+                1e3 * d[3], 1e3 * d[4], 1e3 * d[5]);
   };
   row("true (mean over the frames)", truth - calibration);
   if (!result.extrinsics.empty()) row("estimated", result.extrinsics[0] - calibration);
@@ -49,7 +51,8 @@ void runDemo(const DemoOptions& o) {
   const SimulatedSequence sequence = simulateSequence(initializationSimulation(flight));
   std::printf(
       "Demo: a synthetic long-range flight (seed %llu): %.0f m above ground at %.0f m/s, %d frames, 0.7 m stereo "
-      "baseline, 1024x768, f = %.0f px, %d features per frame, %.1f px noise, rig flexed within %.0f %% of its bounds\n",
+      "baseline, 1024x768, f = %.0f px, %d features per frame, %.1f px noise, rig flexed within %.0f %% of its "
+      "bounds\n",
       static_cast<unsigned long long>(flight.seed), flight.altitude_m, flight.speed_m_s, flight.frames,
       sequence.rig.cameras[0].intrinsics.fx, flight.pointsPerFrame, flight.pixelNoise_px, 100.0 * flight.flexFraction);
 
@@ -79,20 +82,25 @@ void runDemo(const DemoOptions& o) {
               100.0 * rigidScore.finalPositionError_m / rigidScore.distanceFlown_m);
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const bool consistent = std::isfinite(scaleError) && std::abs(scaleError) <= kConsistencySigmas * ours.kappaRelativeStd;
+  const bool consistent =
+      std::isfinite(scaleError) && std::abs(scaleError) <= kConsistencySigmas * ours.kappaRelativeStd;
   const bool sound = ours.success && consistent;
-  std::printf("\nVerdict: %s: long-range start %s, scale error %+.2f %% against %.0f x its reported %.2f %% std; %.2f s in all\n",
-              sound ? "OK" : "FAILED", ours.success ? "sound" : "not sound", 100.0 * scaleError, kConsistencySigmas,
-              100.0 * ours.kappaRelativeStd, seconds);
+  std::printf(
+      "\nVerdict: %s: long-range start %s, scale error %+.2f %% against %.0f x its reported %.2f %% std; %.2f s in "
+      "all\n",
+      sound ? "OK" : "FAILED", ours.success ? "sound" : "not sound", 100.0 * scaleError, kConsistencySigmas,
+      100.0 * ours.kappaRelativeStd, seconds);
   std::fflush(stdout);
-  if (!sound) throw Error("demo: the long-range initialisation is not sound or not consistent with its own uncertainty");
+  if (!sound)
+    throw Error("demo: the long-range initialisation is not sound or not consistent with its own uncertainty");
 }
 
 void addDemoCommand(CLI::App& app) {
   auto options = std::make_shared<DemoOptions>();
   CLI::App* command = app.add_subcommand(
-      "demo", "A synthetic long-range flight: the long-range initialisation (kappa, bounded extrinsic) against a "
-              "rigid-stereo start, scored against the ground truth");
+      "demo",
+      "A synthetic long-range flight: the long-range initialisation (kappa, bounded extrinsic) against a "
+      "rigid-stereo start, scored against the ground truth");
   command->footer(
       "Exits with status 1 when the long-range start is not sound or its scale error exceeds 3 times the standard "
       "deviation it reports. For the paper's studies use `lrsvo study`, for a BAL problem `lrsvo bal --generate`.");
@@ -102,15 +110,17 @@ void addDemoCommand(CLI::App& app) {
   command->add_option("--frames", options->flight.frames, "Frames of the initialisation, over up to 60 m")
       ->check(CLI::Range(3, 50))
       ->capture_default_str();
-  command->add_option("--flex", options->flight.flexFraction,
-                      "Rig flex since calibration, as a fraction of the bounds (1 mm, 0.01 rad)")
+  command
+      ->add_option("--flex", options->flight.flexFraction,
+                   "Rig flex since calibration, as a fraction of the bounds (1 mm, 0.01 rad)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   command->add_option("--noise", options->flight.pixelNoise_px, "Pixel noise sigma (px)")
       ->check(CLI::Range(0.0, 10.0))
       ->capture_default_str();
-  command->add_option("--method", options->constraintMethod,
-                      "Constraint method on the extrinsic (none, log_barrier, gradient_projection, nlopt_lbfgs, ...)")
+  command
+      ->add_option("--method", options->constraintMethod,
+                   "Constraint method on the extrinsic (none, log_barrier, gradient_projection, nlopt_lbfgs, ...)")
       ->capture_default_str();
   command->add_option("--seed", options->flight.seed, "Random seed of the world, flight, rig flex and noise")
       ->capture_default_str();

@@ -44,8 +44,8 @@ FeatureSimulationOptions initializationSimulation(const InitializationFlight& fl
 // the paper's limit) and the scale error as the ratio of true to estimated
 // distance between the first and the last camera reached.
 struct InitializationScore {
-  bool success = false;      // the initialiser's own verdict
-  bool reachedEnd = false;   // it returned a pose for every frame
+  bool success = false;     // the initialiser's own verdict
+  bool reachedEnd = false;  // it returned a pose for every frame
   std::string failure;
   double distanceFlown_m = 0.0;
   double finalPositionError_m = 0.0;

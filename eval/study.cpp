@@ -129,8 +129,11 @@ void StudyReport::write(const StudyOptions& options) const {
   summary["settings"] = settings;
   nlohmann::json checks = nlohmann::json::array();
   for (const StudyCheck& c : checks_)
-    checks.push_back({{"name", c.name}, {"ours", numberOrNull(c.ours)}, {"paper", numberOrNull(c.paper)},
-                      {"unit", c.unit}, {"note", c.note}});
+    checks.push_back({{"name", c.name},
+                      {"ours", numberOrNull(c.ours)},
+                      {"paper", numberOrNull(c.paper)},
+                      {"unit", c.unit},
+                      {"note", c.note}});
   summary["checks"] = checks;
   summary["files"] = files;
   summary["seconds"] = seconds_;

@@ -13,9 +13,9 @@ namespace lrsvo {
 // Settings every study takes (`lrsvo study NAME --seed --trials --out`).
 struct StudyOptions {
   std::uint64_t seed = 1;
-  int trials = 0;                  // 0: the paper's count for this study
-  std::filesystem::path outDir;    // created if missing
-  bool plot = true;                // run the study's matplotlib script
+  int trials = 0;                // 0: the paper's count for this study
+  std::filesystem::path outDir;  // created if missing
+  bool plot = true;              // run the study's matplotlib script
   // Called as work advances: fraction done in [0, 1] and a short message.
   std::function<void(double, const std::string&)> progress = [](double, const std::string&) {};
 
@@ -104,5 +104,4 @@ struct StudyRegistrar {
 #define LRSVO_REGISTER_STUDY_CONCAT_(a, b) a##b
 #define LRSVO_REGISTER_STUDY_NAME_(line) LRSVO_REGISTER_STUDY_CONCAT_(lrsvo_study_registrar_, line)
 // One line in a study's own file registers it: LRSVO_REGISTER_STUDY(Study{...});
-#define LRSVO_REGISTER_STUDY(...) \
-  static const ::lrsvo::StudyRegistrar LRSVO_REGISTER_STUDY_NAME_(__LINE__)(__VA_ARGS__)
+#define LRSVO_REGISTER_STUDY(...) static const ::lrsvo::StudyRegistrar LRSVO_REGISTER_STUDY_NAME_(__LINE__)(__VA_ARGS__)

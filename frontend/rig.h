@@ -30,7 +30,7 @@ double focalLengthFromFov(double horizontalFov_rad, int imageWidth);
 // extrinsic s_k = (c, roll, pitch, yaw) relative to the base (method.md), with
 // a tolerance q_k on each of the six numbers (the box p +- q of eq. 17-19).
 struct Rig {
-  std::vector<Camera> cameras;                            // [0] = base
+  std::vector<Camera> cameras;                             // [0] = base
   std::vector<VertexStereoExtrinsic::Vector6> extrinsics;  // [k - 1] for camera k >= 1
   VertexStereoExtrinsic::Vector6 tolerance =
       (VertexStereoExtrinsic::Vector6() << 1e-3, 1e-3, 1e-3, 0.01, 0.01, 0.01).finished();

@@ -33,7 +33,8 @@ double largestRayAngle(const std::vector<TriangulationView>& views, const Eigen:
 }  // namespace
 
 Eigen::Vector3d triangulateLinear(const std::vector<TriangulationView>& views) {
-  if (views.size() < 2) throw Error("triangulate: a point needs at least two views, got " + std::to_string(views.size()));
+  if (views.size() < 2)
+    throw Error("triangulate: a point needs at least two views, got " + std::to_string(views.size()));
   Eigen::MatrixXd a(2 * views.size(), 4);
   for (std::size_t i = 0; i < views.size(); ++i) {
     const Eigen::Matrix<double, 3, 4> p = views[i].cameraFromWorld.matrix().topRows<3>();
@@ -95,8 +96,9 @@ TriangulationResult triangulate(const std::vector<TriangulationView>& views, con
 
   result.rmsReprojectionError_px = std::sqrt(error / (2.0 * views.size()));
   result.parallax_rad = largestRayAngle(views, result.point);
-  result.valid = std::isfinite(error) && result.parallax_rad >= options.minParallax_rad &&
-                 (options.maxReprojectionError_px <= 0.0 || result.rmsReprojectionError_px <= options.maxReprojectionError_px);
+  result.valid =
+      std::isfinite(error) && result.parallax_rad >= options.minParallax_rad &&
+      (options.maxReprojectionError_px <= 0.0 || result.rmsReprojectionError_px <= options.maxReprojectionError_px);
   return result;
 }
 

@@ -17,14 +17,14 @@ struct TriangulationView {
 };
 
 struct TriangulationOptions {
-  int maxIterations = 10;             // Gauss-Newton refinement of the linear solution
-  double minParallax_rad = 0.0;       // largest angle between any two rays must exceed this
-  double maxReprojectionError_px = 0; // > 0: reject when the RMS reprojection error is larger
+  int maxIterations = 10;              // Gauss-Newton refinement of the linear solution
+  double minParallax_rad = 0.0;        // largest angle between any two rays must exceed this
+  double maxReprojectionError_px = 0;  // > 0: reject when the RMS reprojection error is larger
 };
 
 struct TriangulationResult {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  // world frame
-  bool valid = false;  // in front of every camera, enough parallax, within the error limit
+  bool valid = false;                               // in front of every camera, enough parallax, within the error limit
   double rmsReprojectionError_px = 0.0;
   double parallax_rad = 0.0;  // largest angle between two of the rays
 };

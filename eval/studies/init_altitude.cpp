@@ -87,8 +87,8 @@ StudyReport runInitAltitude(const StudyOptions& options) {
   for (double a = kAltitudeStep_m; a <= kMaxAltitude_m + 1e-9; a += kAltitudeStep_m) altitudes.push_back(a);
 
   InitializationFlight flight;
-  report.addSetting("altitudes_m", format("%g-%g every %g (paper: 10-100)", altitudes.front(), altitudes.back(),
-                                          kAltitudeStep_m));
+  report.addSetting("altitudes_m",
+                    format("%g-%g every %g (paper: 10-100)", altitudes.front(), altitudes.back(), kAltitudeStep_m));
   report.addSetting("trials", trials);
   report.addSetting("frames", flight.frames);
   report.addSetting("distance_flown_m", format("%g at most; frames at most %g of the along-track footprint apart",
@@ -99,13 +99,15 @@ StudyReport runInitAltitude(const StudyOptions& options) {
   report.addSetting("points_per_frame", flight.pointsPerFrame);
   report.addSetting("deformation", format("constant flex uniform within %g of the bounds, vibration 0.05 mm / 0.2 mrad",
                                           flight.flexFraction));
-  report.addSetting("long_range", "LongRangeInitializer defaults: 10 frames, kappa, log_barrier, bounds 1 mm / 0.01 rad");
-  report.addSetting("rigid_stereo", "RigidStereoInitializer defaults: first-pair triangulation, P3P-MLESAC, BA with S fixed");
+  report.addSetting("long_range",
+                    "LongRangeInitializer defaults: 10 frames, kappa, log_barrier, bounds 1 mm / 0.01 rad");
+  report.addSetting("rigid_stereo",
+                    "RigidStereoInitializer defaults: first-pair triangulation, P3P-MLESAC, BA with S fixed");
 
   StudyTable& trialTable =
-      report.addTable("init_altitude_trials.csv", {"altitude_m", "speed_m_s", "trial", "method", "success",
-                                                   "reached_end", "distance_flown_m", "final_error_m",
-                                                   "final_error_percent", "scale_ratio", "failure"});
+      report.addTable("init_altitude_trials.csv",
+                      {"altitude_m", "speed_m_s", "trial", "method", "success", "reached_end", "distance_flown_m",
+                       "final_error_m", "final_error_percent", "scale_ratio", "failure"});
   std::vector<Trial> all;
   const int steps = static_cast<int>(altitudes.size()) * trials;
   int step = 0;
@@ -123,12 +125,12 @@ StudyReport runInitAltitude(const StudyOptions& options) {
         const InitializationResult result = runMethod(variant.initializer, sequence, flight.seed);
         const InitializationScore score = scoreInitialization(sequence, flight.frames, result);
         all.push_back({altitude, variant.name, score});
-        trialTable.addRow(std::vector<std::string>{
-            format("%g", altitude), format("%g", flight.speed_m_s), std::to_string(trial), variant.name,
-            score.success ? "1" : "0", score.reachedEnd ? "1" : "0", format("%.4f", score.distanceFlown_m),
-            format("%.6g", score.finalPositionError_m),
-            format("%.6g", 100.0 * score.finalPositionError_m / score.distanceFlown_m),
-            format("%.6g", score.scaleRatio), score.failure});
+        trialTable.addRow(
+            std::vector<std::string>{format("%g", altitude), format("%g", flight.speed_m_s), std::to_string(trial),
+                                     variant.name, score.success ? "1" : "0", score.reachedEnd ? "1" : "0",
+                                     format("%.4f", score.distanceFlown_m), format("%.6g", score.finalPositionError_m),
+                                     format("%.6g", 100.0 * score.finalPositionError_m / score.distanceFlown_m),
+                                     format("%.6g", score.scaleRatio), score.failure});
       }
       ++step;
       options.progress(static_cast<double>(step) / steps, format("%g m, trial %d of %d", altitude, trial + 1, trials));
@@ -136,8 +138,8 @@ StudyReport runInitAltitude(const StudyOptions& options) {
   }
 
   StudyTable& summaryTable = report.addTable(
-      "init_altitude.csv", {"altitude_m", "method", "trials", "successes", "mean_error_m", "std_error_m",
-                            "max_error_m", "mean_error_percent", "max_error_percent", "within_5m"});
+      "init_altitude.csv", {"altitude_m", "method", "trials", "successes", "mean_error_m", "std_error_m", "max_error_m",
+                            "mean_error_percent", "max_error_percent", "within_5m"});
   std::map<std::pair<std::string, double>, AltitudeSummary> summaries;
   for (const Variant& variant : kVariants)
     for (double altitude : altitudes) {
@@ -171,13 +173,15 @@ StudyReport runInitAltitude(const StudyOptions& options) {
       if (failing(summaries.at({method, altitude}))) return altitude;
     return nan;
   };
-  report.addCheck({"rigid stereo: first altitude with mean error > 10 % of distance",
-                   firstAltitude("rigid-stereo",
-                                 [](const AltitudeSummary& s) { return s.meanPercent > 100.0 * kRigidFailureFraction; }),
-                   40.0, "m", "paper: fails above ~40 m (baseline-to-depth ~0.02)"});
-  report.addCheck({"long-range: first altitude with mean error > 2 % of distance",
-                   firstAltitude("long-range", [](const AltitudeSummary& s) { return s.meanPercent > 100.0 * kGoalFraction; }),
-                   nan, "m", "beyond the paper (it stops at 100 m); NaN: met up to 150 m"});
+  report.addCheck(
+      {"rigid stereo: first altitude with mean error > 10 % of distance",
+       firstAltitude("rigid-stereo",
+                     [](const AltitudeSummary& s) { return s.meanPercent > 100.0 * kRigidFailureFraction; }),
+       40.0, "m", "paper: fails above ~40 m (baseline-to-depth ~0.02)"});
+  report.addCheck(
+      {"long-range: first altitude with mean error > 2 % of distance",
+       firstAltitude("long-range", [](const AltitudeSummary& s) { return s.meanPercent > 100.0 * kGoalFraction; }), nan,
+       "m", "beyond the paper (it stops at 100 m); NaN: met up to 150 m"});
   report.addCheck({"long-range, exact rig: first altitude with mean error > 2 % of distance",
                    firstAltitude("long-range, exact rig",
                                  [](const AltitudeSummary& s) { return s.meanPercent > 100.0 * kGoalFraction; }),
@@ -185,9 +189,10 @@ StudyReport runInitAltitude(const StudyOptions& options) {
   report.addCheck({"rigid stereo, exact rig: mean final error at 100 m",
                    summaries.at({"rigid-stereo, exact rig", kPaperMaxAltitude_m}).meanError_m, nan, "m",
                    "reference: a rigid start is sound when the rig is truly rigid"});
-  report.addCheck({"long-range: first altitude with a trial > 2 % of distance",
-                   firstAltitude("long-range", [](const AltitudeSummary& s) { return s.maxPercent > 100.0 * kGoalFraction; }),
-                   nan, "m", "beyond the paper; NaN: every trial met it up to 150 m"});
+  report.addCheck(
+      {"long-range: first altitude with a trial > 2 % of distance",
+       firstAltitude("long-range", [](const AltitudeSummary& s) { return s.maxPercent > 100.0 * kGoalFraction; }), nan,
+       "m", "beyond the paper; NaN: every trial met it up to 150 m"});
   report.setSeconds(stopwatch.seconds());
   return report;
 }
