@@ -4,6 +4,7 @@
 // in the map over its true distance; the scale error is the true over the
 // estimated distance between the first and the last camera.
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -62,6 +63,7 @@ StudyReport runInitScale(const StudyOptions& options) {
     std::vector<double> after, iterations;
   };
   std::map<std::pair<std::string, double>, Tally> tallies;
+  int invalidTrials = 0;
   const int steps = static_cast<int>(std::size(kStartScales)) * trials;
   int step = 0;
   for (int trial = 0; trial < trials; ++trial) {
@@ -86,12 +88,17 @@ StudyReport runInitScale(const StudyOptions& options) {
       options.progress(static_cast<double>(step) / steps,
                        format("trial %d of %d, start scale %g", trial + 1, trials, startScale));
     }
-    const double reference = scores.at({kVariants[0].name, kReferenceStartScale}).scaleRatio;
+    // A trial whose reference run itself fails (the monocular start broke
+    // down) defines no optimum: it is counted apart, not as a convergence.
+    const InitializationScore& referenceScore = scores.at({kVariants[0].name, kReferenceStartScale});
+    const double reference = referenceScore.scaleRatio;
+    if (!referenceScore.success) ++invalidTrials;
     for (const auto& [key, score] : scores) {
-      const bool converged = std::abs(score.scaleRatio / reference - 1.0) <= kConvergedTolerance;
+      const bool converged =
+          referenceScore.success && std::abs(score.scaleRatio / reference - 1.0) <= kConvergedTolerance;
       Tally& tally = tallies[key];
       tally.converged += converged;
-      tally.after.push_back(score.scaleRatio);
+      if (referenceScore.success) tally.after.push_back(score.scaleRatio);
       tally.iterations.push_back(iterations.at(key));
       trialTable.addRow(std::vector<std::string>{
           format("%g", key.second), key.first, std::to_string(trial), format("%.6g", 1.0 / key.second),
@@ -109,12 +116,13 @@ StudyReport runInitScale(const StudyOptions& options) {
       const Moments m = sampleMoments(tally.after);
       summaryTable.addRow(std::vector<std::string>{
           format("%g", startScale), variant.name, format("%.6g", 1.0 / startScale), format("%.6g", m.mean),
-          format("%.6g", m.stddev), format("%.4g", static_cast<double>(tally.converged) / trials),
+          format("%.6g", m.stddev),
+          format("%.4g", static_cast<double>(tally.converged) / std::max(1, trials - invalidTrials)),
           format("%.4g", sampleMoments(tally.iterations).mean)});
     }
 
   auto reliable = [&](const char* variant, double startScale) {
-    return tallies.at({variant, startScale}).converged >= kReliableFraction * trials;
+    return tallies.at({variant, startScale}).converged >= kReliableFraction * (trials - invalidTrials);
   };
   int reliableWithKappa = 0, reliableWithoutKappa = 0;
   for (double startScale : kStartScales) {
@@ -138,16 +146,18 @@ StudyReport runInitScale(const StudyOptions& options) {
         if (s < startScale && s >= 1.0) allBelow = allBelow && reliable("without-kappa", s);
       if (allBelow) highest = std::max(highest, startScale);
     }
-  std::vector<double> afterWithKappa;
+  std::vector<double> errorWithKappa;
   for (double startScale : kStartScales)
-    for (double r : tallies.at({"with-kappa", startScale}).after) afterWithKappa.push_back(r);
-  const Moments withKappa = sampleMoments(afterWithKappa);
+    for (double r : tallies.at({"with-kappa", startScale}).after) errorWithKappa.push_back(std::abs(r - 1.0));
   const double nan = std::numeric_limits<double>::quiet_NaN();
   report.addCheck({"with kappa: start scales that converge reliably",
                    static_cast<double>(reliableWithKappa) / std::size(kStartScales), 1.0, "fraction",
                    "paper: converges at every start scale 0.25-1.5"});
-  report.addCheck({"with kappa: mean scale error after", withKappa.mean, nan, "ratio", "true over estimated distance"});
-  report.addCheck({"with kappa: std of scale error after", withKappa.stddev, nan, "ratio", ""});
+  report.addCheck({"trials whose monocular start failed", static_cast<double>(invalidTrials), nan, "trials",
+                   "left out of the convergence counts: no optimum to converge to"});
+  report.addCheck({"with kappa: median |scale error| after",
+                   errorWithKappa.empty() ? nan : SortedSample(errorWithKappa).median(), nan, "ratio",
+                   "|true / estimated distance - 1|: pitch about y and scale trade off at 70 m"});
   report.addCheck({"without kappa: start scales that converge reliably",
                    static_cast<double>(reliableWithoutKappa) / std::size(kStartScales), 5.0 / 12.0, "fraction",
                    "paper: only within ~10 % of the truth (0.9-1.1: 5 of our 12 start scales hold 0.9 <= r <= 1.1)"});
