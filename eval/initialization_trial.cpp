@@ -73,8 +73,11 @@ InitializationScore scoreInitialization(const SimulatedSequence& sequence, int f
   score.distanceFlown_m = (centre(truth.back()) - centre(truth.front())).norm();
   const int reached = static_cast<int>(result.cameraFromWorld.size());
   score.reachedEnd = reached >= frames;
-  score.finalPositionError_m = score.reachedEnd
-                                   ? (centre(result.cameraFromWorld[frames - 1]) - centre(truth.back())).norm()
+  score.rawFinalPositionError_m = score.reachedEnd
+                                      ? (centre(result.cameraFromWorld[frames - 1]) - centre(truth.back())).norm()
+                                      : std::numeric_limits<double>::quiet_NaN();
+  score.finalPositionError_m = score.reachedEnd && score.success
+                                   ? std::min(score.rawFinalPositionError_m, score.distanceFlown_m)
                                    : score.distanceFlown_m;
   score.scaleRatio = std::numeric_limits<double>::quiet_NaN();
   if (reached >= 2) {

@@ -40,16 +40,19 @@ double paperSpeedForAltitude(double altitude_m);
 FeatureSimulationOptions initializationSimulation(const InitializationFlight& flight);
 
 // How an initialisation ended against the truth: the final camera's position
-// error (a run that did not reach the last frame scores the distance flown,
-// the paper's limit) and the scale error as the ratio of true to estimated
-// distance between the first and the last camera reached.
+// error and the scale error as the ratio of true to estimated distance
+// between the first and the last camera reached. As in the paper's Fig. 17,
+// the error is limited to the distance flown ("the limit of the length of the
+// data set"): a run that failed (by its own verdict) or did not reach the last
+// frame scores that limit; the unlimited error is kept beside it.
 struct InitializationScore {
   bool success = false;     // the initialiser's own verdict
   bool reachedEnd = false;  // it returned a pose for every frame
   std::string failure;
   double distanceFlown_m = 0.0;
-  double finalPositionError_m = 0.0;
-  double scaleRatio = 0.0;  // true / estimated distance (NaN without two poses)
+  double finalPositionError_m = 0.0;     // limited to distanceFlown_m
+  double rawFinalPositionError_m = 0.0;  // of the last pose returned (NaN when none)
+  double scaleRatio = 0.0;               // true / estimated distance (NaN without two poses)
 };
 
 InitializationScore scoreInitialization(const SimulatedSequence& sequence, int frames,

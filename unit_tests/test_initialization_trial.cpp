@@ -62,13 +62,24 @@ TEST(InitializationTrial, ScoreMeasuresTheLastCameraInTheFirstCamerasFrame) {
   // 30 m/s at 30 Hz: 1 m per frame, every 7th kept for the 6.67 m wanted: 9 x 7 m.
   EXPECT_NEAR(perfect.distanceFlown_m, 63.0, 1e-6);
 
-  // The map twice too large about the first camera: the last camera is one
-  // distance flown off and the scale error is 1/2.
-  InitializationResult doubled = exact;
-  for (Eigen::Isometry3d& pose : doubled.cameraFromWorld) pose.translation() *= 2.0;
-  const InitializationScore scaled = scoreInitialization(sequence, 10, doubled);
-  EXPECT_NEAR(scaled.finalPositionError_m, perfect.distanceFlown_m, 1e-9);
-  EXPECT_NEAR(scaled.scaleRatio, 0.5, 1e-12);
+  // The map 1.5 times too large about the first camera: the last camera is
+  // half the distance flown off and the scale error is 2/3.
+  InitializationResult scaledUp = exact;
+  for (Eigen::Isometry3d& pose : scaledUp.cameraFromWorld) pose.translation() *= 1.5;
+  const InitializationScore scaled = scoreInitialization(sequence, 10, scaledUp);
+  EXPECT_NEAR(scaled.finalPositionError_m, 0.5 * perfect.distanceFlown_m, 1e-9);
+  EXPECT_NEAR(scaled.scaleRatio, 2.0 / 3.0, 1e-12);
+
+  // Three times too large: two distances off, limited to one (the paper's limit).
+  for (Eigen::Isometry3d& pose : scaledUp.cameraFromWorld) pose.translation() *= 2.0;
+  const InitializationScore far = scoreInitialization(sequence, 10, scaledUp);
+  EXPECT_NEAR(far.rawFinalPositionError_m, 2.0 * perfect.distanceFlown_m, 1e-9);
+  EXPECT_DOUBLE_EQ(far.finalPositionError_m, far.distanceFlown_m);
+
+  // A run that failed by its own verdict scores the limit, whatever it returned.
+  InitializationResult unsound = exact;
+  unsound.success = false;
+  EXPECT_DOUBLE_EQ(scoreInitialization(sequence, 10, unsound).finalPositionError_m, perfect.distanceFlown_m);
 
   // A run that stopped early scores the distance flown, the paper's limit.
   InitializationResult stopped = exact;
