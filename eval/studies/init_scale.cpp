@@ -131,21 +131,14 @@ StudyReport runInitScale(const StudyOptions& options) {
   }
   // The widest interval of start scales around 1 over which the run without
   // kappa converges reliably.
-  double lowest = 1.0, highest = 1.0;
-  for (double startScale : kStartScales)
-    if (startScale < 1.0 && reliable("without-kappa", startScale)) {
-      bool allAbove = true;
-      for (double s : kStartScales)
-        if (s > startScale && s <= 1.0) allAbove = allAbove && reliable("without-kappa", s);
-      if (allAbove) lowest = std::min(lowest, startScale);
-    }
-  for (double startScale : kStartScales)
-    if (startScale > 1.0 && reliable("without-kappa", startScale)) {
-      bool allBelow = true;
-      for (double s : kStartScales)
-        if (s < startScale && s >= 1.0) allBelow = allBelow && reliable("without-kappa", s);
-      if (allBelow) highest = std::max(highest, startScale);
-    }
+  // Walk out from the true start scale while the run without kappa stays reliable.
+  const auto* truth = std::find(std::begin(kStartScales), std::end(kStartScales), kReferenceStartScale);
+  double lowest = kReferenceStartScale, highest = kReferenceStartScale;
+  if (reliable("without-kappa", *truth)) {
+    for (const auto* s = truth; s != std::begin(kStartScales) && reliable("without-kappa", *(s - 1)); --s)
+      lowest = *(s - 1);
+    for (const auto* s = truth + 1; s != std::end(kStartScales) && reliable("without-kappa", *s); ++s) highest = *s;
+  }
   std::vector<double> errorWithKappa;
   for (double startScale : kStartScales)
     for (double r : tallies.at({"with-kappa", startScale}).after) errorWithKappa.push_back(std::abs(r - 1.0));
