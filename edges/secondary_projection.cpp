@@ -18,7 +18,7 @@ Eigen::Vector2d projectSecondary(const VertexPose& pose, const Eigen::Vector3d& 
   const Eigen::Vector3d c = s.head<3>();
   const Eigen::Vector3d base = pose.rotation() * point + pose.translation();
   const Eigen::Vector3d offset = base - c / kappa;
-  const Eigen::Matrix3d rs = extrinsic.rotation();
+  const Eigen::Matrix3d& rs = extrinsic.rotation();
   const Eigen::Vector3d secondary = rs * offset;
   if (jacobians) {
     const Eigen::Matrix<double, 2, 3> dxdp = intrinsics.projectJacobian(secondary);
@@ -29,9 +29,9 @@ Eigen::Vector2d projectSecondary(const VertexPose& pose, const Eigen::Vector3d& 
     jacobians->extrinsic.leftCols<3>() = -dxdBase / kappa;
     // R_s = Rz(yaw) Ry(pitch) Rx(roll); each angle's derivative inserts its
     // axis' cross product at that factor.
-    const Eigen::Matrix3d rx = rotationFromRollPitchYaw(s[3], 0.0, 0.0);
-    const Eigen::Matrix3d rz = rotationFromRollPitchYaw(0.0, 0.0, s[5]);
-    const Eigen::Matrix3d ry = rotationFromRollPitchYaw(0.0, s[4], 0.0);
+    const Eigen::Matrix3d& rx = extrinsic.rollRotation();
+    const Eigen::Matrix3d& ry = extrinsic.pitchRotation();
+    const Eigen::Matrix3d& rz = extrinsic.yawRotation();
     jacobians->extrinsic.col(3) = dxdp * (rs * Eigen::Vector3d::UnitX().cross(offset));
     jacobians->extrinsic.col(4) = dxdp * (rz * (ry * Eigen::Vector3d::UnitY().cross(rx * offset)));
     jacobians->extrinsic.col(5) = dxdp * Eigen::Vector3d::UnitZ().cross(secondary);

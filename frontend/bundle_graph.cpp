@@ -20,6 +20,13 @@ namespace {
 // observations of a point at ~15 units.
 constexpr double kDistancePriorSigma = 1e-2;
 
+template <class ProjectionEdge>
+Eigen::Vector2d residualOf(const Edge* edge) {
+  Eigen::Vector2d residual;
+  static_cast<const ProjectionEdge*>(edge)->computeResidual(residual);
+  return residual;
+}
+
 }  // namespace
 
 void holdCentreDistance(Graph& graph, VertexPose* a, VertexPose* b) {
@@ -69,12 +76,12 @@ void BundleGraph::holdDistance(int poseA, int poseB) { holdCentreDistance(graph_
 int BundleGraph::addObservations(int frame, const FrameObservations& observations) {
   VertexPose* pose = poses_.at(frame);
   const Eigen::Matrix2d information = Eigen::Matrix2d::Identity() / (options_.sigma_px * options_.sigma_px);
-  auto finish = [&](auto edge, const Observation& observation) {
+  auto finish = [&]<class ProjectionEdge>(std::unique_ptr<ProjectionEdge> edge, const Observation& observation) {
     edge->setMeasurement(observation.pixel);
     edge->setInformation(information);
     if (!options_.robustKernel.empty())
       edge->setRobustKernel(makeRobustKernel(options_.robustKernel, options_.robustKernelDelta));
-    return graph_.addEdge(std::move(edge));
+    projections_.push_back({frame, observation, graph_.addEdge(std::move(edge)), &residualOf<ProjectionEdge>});
   };
   int added = 0;
   for (const Observation& observation : observations.observations) {
@@ -84,7 +91,7 @@ int BundleGraph::addObservations(int frame, const FrameObservations& observation
       auto edge = std::make_unique<EdgeProjectBase>(rig_.cameras[0].intrinsics);
       edge->setVertex(0, pose);
       edge->setVertex(1, point->second);
-      baseEdges_.push_back(finish(std::move(edge), observation));
+      finish(std::move(edge), observation);
       ++added;
       continue;
     }
@@ -97,13 +104,13 @@ int BundleGraph::addObservations(int frame, const FrameObservations& observation
       edge->setVertex(1, point->second);
       edge->setVertex(2, extrinsic);
       edge->setVertex(3, scale_);
-      scaledEdges_.push_back(finish(std::move(edge), observation));
+      finish(std::move(edge), observation);
     } else {
       auto edge = std::make_unique<EdgeProjectSecondary>(camera);
       edge->setVertex(0, pose);
       edge->setVertex(1, point->second);
       edge->setVertex(2, extrinsic);
-      secondaryEdges_.push_back(finish(std::move(edge), observation));
+      finish(std::move(edge), observation);
     }
     ++added;
   }
@@ -138,19 +145,16 @@ std::vector<BundleGraph::Vector6> BundleGraph::extrinsics() const {
 
 double BundleGraph::rmsReprojectionError_px() const {
   double sum = 0.0;
-  std::size_t count = 0;
-  auto accumulate = [&](const auto& edges) {
-    for (const auto* edge : edges) {
-      Eigen::Vector2d residual;
-      edge->computeResidual(residual);
-      sum += residual.squaredNorm();
-      count += 2;
-    }
-  };
-  accumulate(baseEdges_);
-  accumulate(secondaryEdges_);
-  accumulate(scaledEdges_);
-  return count ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
+  for (const Projection& projection : projections_) sum += projection.residual(projection.edge).squaredNorm();
+  return projections_.empty() ? 0.0 : std::sqrt(sum / (2.0 * static_cast<double>(projections_.size())));
+}
+
+std::vector<ProjectionError> BundleGraph::projectionErrors() const {
+  std::vector<ProjectionError> errors;
+  errors.reserve(projections_.size());
+  for (const Projection& projection : projections_)
+    errors.push_back({projection.frame, projection.observation, projection.residual(projection.edge).norm()});
+  return errors;
 }
 
 }  // namespace lrsvo

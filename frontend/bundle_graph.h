@@ -22,6 +22,13 @@ namespace lrsvo {
 // keeps the distance between the centres of a and b at its current value.
 void holdCentreDistance(Graph& graph, VertexPose* a, VertexPose* b);
 
+// The reprojection error of one observation in the graph, in pixels.
+struct ProjectionError {
+  int frame = 0;  // the pose index
+  Observation observation;
+  double error_px = 0.0;  // |projection - measurement|
+};
+
 struct BundleGraphOptions {
   double sigma_px = 1.0;               // measurement noise: information = I / sigma^2
   std::string robustKernel = "Huber";  // "" for none, else a registered kernel
@@ -62,6 +69,8 @@ class BundleGraph {
   std::vector<Vector6> extrinsics() const;
   // RMS reprojection error per image coordinate over every projection edge, in pixels.
   double rmsReprojectionError_px() const;
+  // Every projection edge's current error, in the order the observations were added.
+  std::vector<ProjectionError> projectionErrors() const;
 
  private:
   const Rig& rig_;
@@ -72,9 +81,15 @@ class BundleGraph {
   std::map<int, VertexPoint3*> points_;
   std::vector<VertexStereoExtrinsic*> extrinsics_;  // [k - 1], nullptr when not added
   VertexScale* scale_ = nullptr;
-  std::vector<const EdgeProjectBase*> baseEdges_;
-  std::vector<const EdgeProjectSecondary*> secondaryEdges_;
-  std::vector<const EdgeProjectSecondaryScaled*> scaledEdges_;
+  // One per projection edge: which observation it measures and how to read
+  // its residual (the three edge types share no residual interface).
+  struct Projection {
+    int frame;
+    Observation observation;
+    const Edge* edge;
+    Eigen::Vector2d (*residual)(const Edge*);
+  };
+  std::vector<Projection> projections_;
 };
 
 }  // namespace lrsvo

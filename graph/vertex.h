@@ -61,15 +61,22 @@ class VectorVertex : public BaseVertex<D> {
   using BaseVertex<D>::BaseVertex;
 
   const Estimate& estimate() const { return estimate_; }
-  void setEstimateVector(const Estimate& estimate) { estimate_ = estimate; }
+  void setEstimateVector(const Estimate& estimate) {
+    estimate_ = estimate;
+    estimateChanged();
+  }
 
   int estimateSize() const final { return D; }
   void getEstimate(double* values) const final { Eigen::Map<Estimate>{values} = estimate_; }
-  void setEstimate(const double* values) override { estimate_ = Eigen::Map<const Estimate>(values); }
-  void oplus(const double* delta) final { estimate_ += Eigen::Map<const Estimate>(delta); }
+  void setEstimate(const double* values) final { setEstimateVector(Eigen::Map<const Estimate>(values)); }
+  void oplus(const double* delta) final { setEstimateVector(estimate_ + Eigen::Map<const Estimate>(delta)); }
   bool isEuclidean() const final { return true; }
 
  protected:
+  // Called after every change of the estimate: a derived vertex refreshes
+  // what it caches from it (e.g. a rotation matrix the edges read).
+  virtual void estimateChanged() {}
+
   Estimate estimate_ = Estimate::Zero();
 };
 

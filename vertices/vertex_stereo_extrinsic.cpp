@@ -20,14 +20,22 @@ Eigen::Isometry3d secondaryFromBase(const VertexStereoExtrinsic::Vector6& parame
 }
 
 VertexStereoExtrinsic::VertexStereoExtrinsic(int id, const Vector6& parameters) : VectorVertex<6>(id) {
-  estimate_ = parameters;
+  setEstimateVector(parameters);
 }
 
-Eigen::Matrix3d VertexStereoExtrinsic::rotation() const {
-  return rotationFromRollPitchYaw(estimate_[3], estimate_[4], estimate_[5]);
+void VertexStereoExtrinsic::estimateChanged() {
+  roll_ = rotationFromRollPitchYaw(estimate_[3], 0.0, 0.0);
+  pitch_ = rotationFromRollPitchYaw(0.0, estimate_[4], 0.0);
+  yaw_ = rotationFromRollPitchYaw(0.0, 0.0, estimate_[5]);
+  rotation_ = yaw_ * pitch_ * roll_;
 }
 
-Eigen::Isometry3d VertexStereoExtrinsic::secondaryFromBase() const { return lrsvo::secondaryFromBase(estimate_); }
+Eigen::Isometry3d VertexStereoExtrinsic::secondaryFromBase() const {
+  Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();
+  transform.linear() = rotation_;
+  transform.translation() = -rotation_ * estimate_.head<3>();
+  return transform;
+}
 
 LRSVO_REGISTER_TYPE(Vertex, VertexStereoExtrinsic);
 

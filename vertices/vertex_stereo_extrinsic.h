@@ -19,11 +19,22 @@ class VertexStereoExtrinsic : public VectorVertex<6> {
   explicit VertexStereoExtrinsic(int id = -1, const Vector6& parameters = Vector6::Zero());
 
   Eigen::Vector3d centre() const { return estimate_.head<3>(); }
-  Eigen::Matrix3d rotation() const;
+  // R_s and its factors Rx(roll), Ry(pitch), Rz(yaw), kept up to date with
+  // the estimate: every projection edge of a window reads them.
+  const Eigen::Matrix3d& rotation() const { return rotation_; }
+  const Eigen::Matrix3d& rollRotation() const { return roll_; }
+  const Eigen::Matrix3d& pitchRotation() const { return pitch_; }
+  const Eigen::Matrix3d& yawRotation() const { return yaw_; }
   // The rigid transform X_c1 = R_s (X_c0 - c), secondary-from-base.
   Eigen::Isometry3d secondaryFromBase() const;
   const char* typeTag() const override { return kTypeTag; }
   std::unique_ptr<Vertex> clone() const override { return std::make_unique<VertexStereoExtrinsic>(*this); }
+
+ protected:
+  void estimateChanged() override;
+
+ private:
+  Eigen::Matrix3d rotation_, roll_, pitch_, yaw_;
 };
 
 // Rz(yaw) Ry(pitch) Rx(roll).

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "vertices/vertex_stereo_extrinsic.h"
+
+namespace lrsvo {
+
+// Wall time of the odometry's stages for one frame, in milliseconds.
+struct StageTimes {
+  double initialize_ms = 0.0;
+  double pose_ms = 0.0;
+  double triangulate_ms = 0.0;
+  double bundle_ms = 0.0;
+  double total() const { return initialize_ms + pose_ms + triangulate_ms + bundle_ms; }
+};
+
+// The odometry's answer for one input frame.
+struct FrameEstimate {
+  int frame = 0;  // index of the input frame
+  double time_s = 0.0;
+  bool tracked = false;  // false: no pose (initialising, or tracking lost)
+  bool keyframe = false;
+  // Tracked stretches between losses are numbered 0, 1, ...; each new one
+  // starts where the last tracked pose was (the trajectory marks the gap).
+  int segment = -1;
+  Eigen::Isometry3d cameraFromWorld = Eigen::Isometry3d::Identity();  // base camera
+  std::vector<VertexStereoExtrinsic::Vector6> extrinsics;             // [k - 1]: the window's S when tracked
+  // Counts and costs.
+  int observations = 0;   // base-camera features of the frame
+  int mappedMatches = 0;  // ... of tracks with a point
+  int poseInliers = 0;
+  int mapPoints = 0;       // points in the window after this frame
+  int windowFrames = 0;    // keyframes in the window
+  double windowRmsError_px = 0.0;  // after the window adjustment (keyframes only)
+  int bundleIterations = 0;
+  StageTimes times;
+};
+
+}  // namespace lrsvo

@@ -1,0 +1,202 @@
+#include "frontend/odometry.h"
+
+#include <chrono>
+#include <utility>
+
+#include "graph/error.h"
+#include "graph/registry.h"
+
+namespace lrsvo {
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+int baseObservationCount(const FrameObservations& frame) {
+  int count = 0;
+  for (const Observation& observation : frame.observations) count += observation.camera == 0;
+  return count;
+}
+
+}  // namespace
+
+Odometry::Odometry(Rig rig, OdometryOptions options)
+    : rig_(std::move(rig)), options_(std::move(options)), keyframePolicy_(options_.keyframes), window_(rig_, options_) {
+  rig_.validate();
+  if (rig_.secondaryCount() < 1) throw Error("odometry: the rig needs a secondary camera");
+  options_.validate();
+  LongRangeInitializer{options_.initializer};  // validates its options now rather than at the first frame
+}
+
+std::vector<FrameEstimate> Odometry::process(const FrameObservations& frame) {
+  const int index = nextFrame_++;
+  if (tracking_) {
+    FrameEstimate estimate = track(frame, index);
+    if (estimate.tracked) return {estimate};
+    // Lost: this frame starts the next initialisation.
+  }
+  pending_.push_back(frame);
+  pendingIndices_.push_back(index);
+  const int needed = (options_.initializer.frames - 1) * options_.initializationStep + 1;
+  if (static_cast<int>(pending_.size()) < needed) return {};
+  return initialize();
+}
+
+std::vector<FrameEstimate> Odometry::finish() {
+  std::vector<FrameEstimate> estimates;
+  for (std::size_t i = 0; i < pending_.size(); ++i) estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
+  pending_.clear();
+  pendingIndices_.clear();
+  return estimates;
+}
+
+std::vector<int> Odometry::takeRejectedTracks() { return std::exchange(rejectedTracks_, {}); }
+
+FrameEstimate Odometry::untracked(const FrameObservations& frame, int index) const {
+  FrameEstimate estimate;
+  estimate.frame = index;
+  estimate.time_s = frame.time_s;
+  estimate.observations = baseObservationCount(frame);
+  return estimate;
+}
+
+std::vector<FrameEstimate> Odometry::initialize() {
+  const auto start = std::chrono::steady_clock::now();
+  const int step = options_.initializationStep;
+  std::vector<FrameObservations> sampled;
+  for (std::size_t i = 0; i < pending_.size(); i += static_cast<std::size_t>(step)) sampled.push_back(pending_[i]);
+  LongRangeInitializerOptions initializerOptions = options_.initializer;
+  initializerOptions.seed = options_.seed + static_cast<std::uint64_t>(pendingIndices_.front());
+  const InitializationResult result = LongRangeInitializer(initializerOptions).initialize(rig_, sampled);
+
+  std::vector<FrameEstimate> estimates;
+  if (!result.success) {
+    // Give up the oldest `step` frames and try again from the next one.
+    for (int i = 0; i < step; ++i) estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
+    pending_.erase(pending_.begin(), pending_.begin() + step);
+    pendingIndices_.erase(pendingIndices_.begin(), pendingIndices_.begin() + step);
+    estimates.front().times.initialize_ms = millisecondsSince(start);
+    return estimates;
+  }
+
+  // The new segment's world is its first camera; place it at the last tracked pose.
+  const Eigen::Isometry3d worldFromSegment = hasLastPose_ ? lastWorldFromCamera_ : Eigen::Isometry3d::Identity();
+  const Eigen::Isometry3d segmentFromWorld = worldFromSegment.inverse();
+  std::map<int, Eigen::Vector3d> points;
+  for (const auto& [track, point] : result.points) points.emplace(track, worldFromSegment * point);
+  std::vector<Keyframe> keyframes;
+  for (std::size_t i = 0; i < sampled.size(); ++i)
+    keyframes.push_back({pendingIndices_[i * static_cast<std::size_t>(step)],
+                         result.cameraFromWorld[i] * segmentFromWorld, sampled[i]});
+  window_.reset(keyframes, std::move(points), result.extrinsics);
+  ++segment_;
+  tracking_ = true;
+  framesSinceKeyframe_ = 0;
+  const double initialize_ms = millisecondsSince(start);
+
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    FrameEstimate estimate;
+    if (i % static_cast<std::size_t>(step) == 0) {
+      estimate = untracked(pending_[i], pendingIndices_[i]);
+      estimate.tracked = true;
+      estimate.keyframe = true;
+      estimate.segment = segment_;
+      estimate.cameraFromWorld = keyframes[i / static_cast<std::size_t>(step)].cameraFromWorld;
+      estimate.extrinsics = window_.extrinsics();
+      estimate.windowRmsError_px = result.rmsReprojectionError_px;
+      estimate.bundleIterations = result.summary.iterationCount();
+    } else {
+      estimate = untracked(pending_[i], pendingIndices_[i]);
+      Eigen::Isometry3d pose;
+      if (estimateFramePose(pending_[i], pendingIndices_[i], pose, estimate)) {
+        estimate.tracked = true;
+        estimate.segment = segment_;
+        estimate.cameraFromWorld = pose;
+        estimate.extrinsics = window_.extrinsics();
+      }
+    }
+    estimate.mapPoints = static_cast<int>(window_.points().size());
+    estimate.windowFrames = static_cast<int>(window_.keyframes().size());
+    estimates.push_back(estimate);
+  }
+  estimates.back().times.initialize_ms = initialize_ms;
+  lastWorldFromCamera_ = keyframes.back().cameraFromWorld.inverse();
+  hasLastPose_ = true;
+  pending_.clear();
+  pendingIndices_.clear();
+  return estimates;
+}
+
+bool Odometry::estimateFramePose(const FrameObservations& frame, int index, Eigen::Isometry3d& cameraFromWorld,
+                                 FrameEstimate& estimate) {
+  std::vector<PoseMatch> matches;
+  std::vector<int> tracks;
+  const auto& points = window_.points();
+  for (const Observation& observation : frame.observations) {
+    if (observation.camera != 0) continue;
+    auto point = points.find(observation.track);
+    if (point == points.end()) continue;
+    matches.push_back({point->second, observation.pixel});
+    tracks.push_back(observation.track);
+  }
+  estimate.mappedMatches = static_cast<int>(matches.size());
+  PoseEstimatorOptions poseOptions = options_.pose;
+  poseOptions.seed = options_.seed ^ (0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(index + 1));
+  const PoseEstimate pose = estimatePose(matches, rig_.cameras[0], poseOptions);
+  estimate.poseInliers = pose.inlierCount;
+  if (!pose.success || pose.inlierCount < options_.minPoseInliers) return false;
+  cameraFromWorld = pose.cameraFromWorld;
+  // Matches far off the refined pose are wrong tracks: stop using them.
+  std::vector<int> rejected;
+  const PinholeIntrinsics& intrinsics = rig_.cameras[0].intrinsics;
+  for (std::size_t i = 0; i < matches.size(); ++i) {
+    const Eigen::Vector3d inCamera = cameraFromWorld * matches[i].point;
+    const bool outlier = inCamera.z() <= 0.0 ||
+                         (intrinsics.project(inCamera) - matches[i].pixel).norm() > options_.outlierThreshold_px;
+    if (outlier) rejected.push_back(tracks[i]);
+  }
+  window_.removeTracks(rejected);
+  rejectedTracks_.insert(rejectedTracks_.end(), rejected.begin(), rejected.end());
+  return true;
+}
+
+FrameEstimate Odometry::track(const FrameObservations& frame, int index) {
+  FrameEstimate estimate = untracked(frame, index);
+  auto start = std::chrono::steady_clock::now();
+  Eigen::Isometry3d pose;
+  const bool posed = estimateFramePose(frame, index, pose, estimate);
+  estimate.times.pose_ms = millisecondsSince(start);
+  if (!posed) {
+    tracking_ = false;
+    return estimate;
+  }
+  estimate.tracked = true;
+  estimate.segment = segment_;
+  ++framesSinceKeyframe_;
+  const Keyframe& last = window_.keyframes().back();
+  if (keyframePolicy_.isKeyframe(last.observations, frame, framesSinceKeyframe_)) {
+    estimate.keyframe = true;
+    framesSinceKeyframe_ = 0;
+    window_.addKeyframe({index, pose, frame});
+    start = std::chrono::steady_clock::now();
+    window_.triangulateNewTracks();
+    estimate.times.triangulate_ms = millisecondsSince(start);
+    start = std::chrono::steady_clock::now();
+    const WindowAdjustment adjustment = window_.adjust();
+    window_.retire();
+    estimate.times.bundle_ms = millisecondsSince(start);
+    estimate.windowRmsError_px = adjustment.rmsError_px;
+    estimate.bundleIterations = adjustment.summary.iterationCount();
+    rejectedTracks_.insert(rejectedTracks_.end(), adjustment.rejectedTracks.begin(), adjustment.rejectedTracks.end());
+    pose = window_.keyframes().back().cameraFromWorld;
+  }
+  estimate.cameraFromWorld = pose;
+  estimate.extrinsics = window_.extrinsics();
+  estimate.mapPoints = static_cast<int>(window_.points().size());
+  estimate.windowFrames = static_cast<int>(window_.keyframes().size());
+  lastWorldFromCamera_ = pose.inverse();
+  return estimate;
+}
+
+}  // namespace lrsvo

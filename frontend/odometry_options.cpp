@@ -1,0 +1,48 @@
+#include "frontend/odometry_options.h"
+
+#include <string>
+
+#include "graph/error.h"
+#include "graph/registry.h"
+#include "graph/solver_options.h"
+
+namespace lrsvo {
+
+ExtrinsicMode extrinsicModeFromName(const std::string& name) {
+  if (name == "bounded") return ExtrinsicMode::kBounded;
+  if (name == "free") return ExtrinsicMode::kFree;
+  if (name == "rigid") return ExtrinsicMode::kRigid;
+  throw Error("unknown extrinsic mode '" + name + "' (expected bounded, free or rigid)");
+}
+
+const char* extrinsicModeName(ExtrinsicMode mode) {
+  switch (mode) {
+    case ExtrinsicMode::kBounded:
+      return "bounded";
+    case ExtrinsicMode::kFree:
+      return "free";
+    case ExtrinsicMode::kRigid:
+      return "rigid";
+  }
+  return "?";
+}
+
+void OdometryOptions::validate() const {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw Error("odometry options: " + what);
+  };
+  require(windowSize >= 3, "windowSize must be at least 3, got " + std::to_string(windowSize));
+  require(fixedPoses >= 1 && fixedPoses < windowSize, "fixedPoses must be in [1, windowSize)");
+  require(initializer.frames <= windowSize, "the initialiser's frames must fit the window");
+  require(maxIterations >= 1, "maxIterations must be positive");
+  require(outlierThreshold_px > 0.0, "outlierThreshold_px must be positive");
+  require(minTriangulationViews >= 2, "minTriangulationViews must be at least 2");
+  require(minPoseInliers >= 4, "minPoseInliers must be at least 4");
+  require(initializationStep >= 1, "initializationStep must be at least 1");
+  require(keyframes.maxFrameGap >= 1, "keyframes.maxFrameGap must be at least 1");
+  require(Registry<ConstraintMethod>::instance().contains(constraintMethod),
+          "unknown constraint method '" + constraintMethod + "'");
+  SolverOptions::fromName(solver);  // throws on an unknown name
+}
+
+}  // namespace lrsvo

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "constraints/constraint_method.h"
+#include "frontend/bundle_graph.h"
+#include "frontend/keyframe_policy.h"
+#include "frontend/long_range_initializer.h"
+#include "frontend/pose_estimator.h"
+#include "frontend/triangulation.h"
+
+namespace lrsvo {
+
+// How the window's bundle adjustment treats the stereo extrinsic S.
+enum class ExtrinsicMode {
+  kBounded,  // S free inside the rig's box around calibration (the paper's method)
+  kFree,     // S free without bounds (the paper's "unconstrained" comparison)
+  kRigid,    // S held at calibration (conventional rigid stereo VO, the failing baseline)
+};
+
+// Parses "bounded" | "free" | "rigid"; throws lrsvo::Error otherwise.
+ExtrinsicMode extrinsicModeFromName(const std::string& name);
+const char* extrinsicModeName(ExtrinsicMode mode);
+
+struct OdometryOptions {
+  // Sliding window: the most recent keyframes whose poses, points and the
+  // shared S one bundle adjustment refines (paper: 12-15 stereo pairs).
+  int windowSize = 15;
+  int fixedPoses = 1;  // oldest poses of the window held (the gauge)
+  ExtrinsicMode extrinsicMode = ExtrinsicMode::kBounded;
+  std::string constraintMethod = "log_barrier";  // any name of Registry<ConstraintMethod>, for kBounded
+  ConstraintSettings constraintSettings{.start = StartPolicy::kProject};
+  std::string solver = "lm_schur_dense";
+  int maxIterations = 20;  // per window adjustment (per barrier round)
+  double functionTolerance = 1e-6;  // stop when the cost changes by less than this fraction
+  int threads = 1;                  // of the solver's linearisation and Schur complement
+  BundleGraphOptions bundle;
+  // An observation whose reprojection error after the window adjustment
+  // exceeds this is removed, and a track with a base-camera outlier is dropped.
+  double outlierThreshold_px = 4.0;
+
+  KeyframePolicyOptions keyframes;
+
+  // New structure: a track is triangulated once its base camera has seen it
+  // in this many keyframes of the window (paper: at least 3 sequential views);
+  // its secondary observations join as further rays.
+  int minTriangulationViews = 3;
+  TriangulationOptions triangulation{.maxIterations = 10, .minParallax_rad = 5e-3, .maxReprojectionError_px = 2.0};
+
+  // Pose of every frame: P3P in MLESAC on base observations of mapped points.
+  PoseEstimatorOptions pose;
+  int minPoseInliers = 20;  // fewer: tracking is lost, and a new initialisation starts
+
+  // The long-range initialisation (its `frames` frames, one every
+  // initializationStep frames: the paper takes 10 from 30).
+  LongRangeInitializerOptions initializer;
+  int initializationStep = 3;
+
+  std::uint64_t seed = 1;
+
+  // Throws lrsvo::Error naming the first invalid setting.
+  void validate() const;
+};
+
+}  // namespace lrsvo

@@ -1,0 +1,145 @@
+#include "frontend/sliding_window.h"
+
+#include <algorithm>
+#include <set>
+#include <unordered_map>
+#include <utility>
+
+#include "frontend/bundle_graph.h"
+#include "graph/optimizer.h"
+#include "graph/solver_options.h"
+
+namespace lrsvo {
+namespace {
+
+// How many keyframes' base cameras observe each track.
+std::unordered_map<int, int> baseViewCounts(const std::deque<Keyframe>& keyframes) {
+  std::unordered_map<int, int> counts;
+  for (const Keyframe& keyframe : keyframes)
+    for (const Observation& observation : keyframe.observations.observations)
+      if (observation.camera == 0) ++counts[observation.track];
+  return counts;
+}
+
+}  // namespace
+
+SlidingWindow::SlidingWindow(const Rig& rig, const OdometryOptions& options) : rig_(rig), options_(options) {}
+
+void SlidingWindow::reset(std::vector<Keyframe> keyframes, std::map<int, Eigen::Vector3d> points,
+                          std::vector<Vector6> extrinsics) {
+  keyframes_.assign(std::make_move_iterator(keyframes.begin()), std::make_move_iterator(keyframes.end()));
+  points_ = std::move(points);
+  extrinsics_ = std::move(extrinsics);
+  if (options_.extrinsicMode == ExtrinsicMode::kRigid) extrinsics_ = rig_.extrinsics;
+  retire();
+}
+
+void SlidingWindow::addKeyframe(Keyframe keyframe) { keyframes_.push_back(std::move(keyframe)); }
+
+Eigen::Isometry3d SlidingWindow::cameraFromWorld(const Eigen::Isometry3d& baseFromWorld, int camera) const {
+  if (camera == 0) return baseFromWorld;
+  return secondaryFromBase(extrinsics_[camera - 1]) * baseFromWorld;
+}
+
+int SlidingWindow::triangulateNewTracks() {
+  std::unordered_map<int, std::vector<TriangulationView>> views;
+  const std::unordered_map<int, int> counts = baseViewCounts(keyframes_);
+  for (const Keyframe& keyframe : keyframes_)
+    for (const Observation& observation : keyframe.observations.observations) {
+      if (points_.count(observation.track)) continue;
+      auto count = counts.find(observation.track);
+      if (count == counts.end() || count->second < options_.minTriangulationViews) continue;
+      views[observation.track].push_back({cameraFromWorld(keyframe.cameraFromWorld, observation.camera),
+                                          rig_.cameras[observation.camera].intrinsics, observation.pixel});
+    }
+  int added = 0;
+  for (const auto& [track, trackViews] : views) {
+    const TriangulationResult result = triangulate(trackViews, options_.triangulation);
+    if (!result.valid) continue;
+    points_[track] = result.point;
+    ++added;
+  }
+  return added;
+}
+
+SolverSummary SlidingWindow::solve(BundleGraph& bundle) const {
+  SolverOptions solver = SolverOptions::fromName(options_.solver);
+  solver.maxIterations = options_.maxIterations;
+  solver.functionTolerance = options_.functionTolerance;
+  solver.threads = options_.threads;
+  switch (options_.extrinsicMode) {
+    case ExtrinsicMode::kBounded:
+      return optimizeWithBounds(bundle.graph(), solver, bundle.extrinsicBounds(), options_.constraintMethod,
+                                options_.constraintSettings);
+    case ExtrinsicMode::kFree:
+    case ExtrinsicMode::kRigid:
+      break;
+  }
+  return Optimizer(solver).optimize(bundle.graph());
+}
+
+WindowAdjustment SlidingWindow::adjust() {
+  // Points seen by one keyframe only are left out: one view (and a short
+  // stereo baseline) cannot place them; they stay in the map for tracking.
+  const std::unordered_map<int, int> counts = baseViewCounts(keyframes_);
+  SparseMap map;
+  for (const Keyframe& keyframe : keyframes_) map.cameraFromWorld.push_back(keyframe.cameraFromWorld);
+  for (const auto& [track, point] : points_) {
+    auto count = counts.find(track);
+    if (count != counts.end() && count->second >= 2) map.points.emplace(track, point);
+  }
+  BundleGraph bundle(rig_, map, std::min<int>(options_.fixedPoses, static_cast<int>(keyframes_.size())),
+                     options_.bundle);
+  const bool extrinsicFixed = options_.extrinsicMode == ExtrinsicMode::kRigid;
+  for (int k = 1; k <= rig_.secondaryCount(); ++k) bundle.addExtrinsic(k, extrinsics_[k - 1], extrinsicFixed);
+  for (std::size_t i = 0; i < keyframes_.size(); ++i)
+    bundle.addObservations(static_cast<int>(i), keyframes_[i].observations);
+
+  WindowAdjustment adjustment;
+  adjustment.summary = solve(bundle);
+  adjustment.rmsError_px = bundle.rmsReprojectionError_px();
+  const SparseMap solved = bundle.map();
+  for (std::size_t i = 0; i < keyframes_.size(); ++i) keyframes_[i].cameraFromWorld = solved.cameraFromWorld[i];
+  for (const auto& [track, point] : solved.points) points_[track] = point;
+  extrinsics_ = bundle.extrinsics();
+
+  // Outliers: a base-camera outlier condemns the track (a wrong temporal
+  // match); a secondary one only that observation (a wrong stereo match).
+  std::set<int> rejected;
+  std::set<std::pair<int, int>> badSecondary;  // (keyframe, track)
+  for (const ProjectionError& error : bundle.projectionErrors()) {
+    if (error.error_px <= options_.outlierThreshold_px) continue;
+    if (error.observation.camera == 0)
+      rejected.insert(error.observation.track);
+    else
+      badSecondary.insert({error.frame, error.observation.track});
+  }
+  for (std::size_t i = 0; i < keyframes_.size(); ++i) {
+    auto& observations = keyframes_[i].observations.observations;
+    const auto before = observations.size();
+    std::erase_if(observations, [&](const Observation& o) {
+      return rejected.count(o.track) || (o.camera != 0 && badSecondary.count({static_cast<int>(i), o.track}));
+    });
+    adjustment.removedObservations += static_cast<int>(before - observations.size());
+  }
+  for (int track : rejected) points_.erase(track);
+  adjustment.rejectedTracks.assign(rejected.begin(), rejected.end());
+  return adjustment;
+}
+
+void SlidingWindow::retire() {
+  const auto windowSize = static_cast<std::size_t>(options_.windowSize);
+  if (keyframes_.size() <= windowSize) return;
+  while (keyframes_.size() > windowSize) keyframes_.pop_front();
+  const std::unordered_map<int, int> counts = baseViewCounts(keyframes_);
+  std::erase_if(points_, [&](const auto& entry) { return !counts.count(entry.first); });
+}
+
+void SlidingWindow::removeTracks(const std::vector<int>& tracks) {
+  const std::set<int> gone(tracks.begin(), tracks.end());
+  for (int track : gone) points_.erase(track);
+  for (Keyframe& keyframe : keyframes_)
+    std::erase_if(keyframe.observations.observations, [&](const Observation& o) { return gone.count(o.track); });
+}
+
+}  // namespace lrsvo

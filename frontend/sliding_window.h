@@ -1,0 +1,71 @@
+#pragma once
+
+#include <deque>
+#include <map>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "frontend/observations.h"
+#include "frontend/odometry_options.h"
+#include "frontend/rig.h"
+#include "graph/solver_summary.h"
+
+namespace lrsvo {
+
+// A frame of the sliding window: its base pose and everything it observed.
+struct Keyframe {
+  int frame = 0;
+  Eigen::Isometry3d cameraFromWorld = Eigen::Isometry3d::Identity();
+  FrameObservations observations;
+};
+
+struct WindowAdjustment {
+  SolverSummary summary;
+  double rmsError_px = 0.0;         // per image coordinate, before outliers are removed
+  std::vector<int> rejectedTracks;  // tracks removed for a base-camera outlier
+  int removedObservations = 0;
+};
+
+// The paper's sliding window (Section 4.1): the most recent keyframes, the
+// points their tracks measure, and one stereo extrinsic S per secondary
+// camera shared by every keyframe. Each adjustment builds the window as a
+// graph (BundleGraph: poses, points, S) and solves it with the chosen solver
+// and constraint method; the oldest keyframe is retired when the window is full.
+class SlidingWindow {
+ public:
+  using Vector6 = VertexStereoExtrinsic::Vector6;
+
+  SlidingWindow(const Rig& rig, const OdometryOptions& options);
+
+  // Starts over from an initialised map (its keyframes oldest first).
+  void reset(std::vector<Keyframe> keyframes, std::map<int, Eigen::Vector3d> points, std::vector<Vector6> extrinsics);
+  void addKeyframe(Keyframe keyframe);
+  // Triangulates every unmapped track the base camera saw in at least
+  // minTriangulationViews keyframes (with its secondary views as further
+  // rays, through the current S). Returns the number of new points.
+  int triangulateNewTracks();
+  // Bundle adjustment of the window, then removal of outlying observations.
+  WindowAdjustment adjust();
+  // Drops the oldest keyframes beyond windowSize, and the points no kept keyframe observes.
+  void retire();
+  // Forgets tracks (a pose estimate rejected them): their points and observations.
+  void removeTracks(const std::vector<int>& tracks);
+
+  const std::deque<Keyframe>& keyframes() const { return keyframes_; }
+  const std::map<int, Eigen::Vector3d>& points() const { return points_; }
+  const std::vector<Vector6>& extrinsics() const { return extrinsics_; }
+  // Camera k's pose (camera-from-world) for a base pose through the current S.
+  Eigen::Isometry3d cameraFromWorld(const Eigen::Isometry3d& baseFromWorld, int camera) const;
+
+ private:
+  SolverSummary solve(class BundleGraph& bundle) const;
+
+  const Rig& rig_;
+  const OdometryOptions& options_;
+  std::deque<Keyframe> keyframes_;
+  std::map<int, Eigen::Vector3d> points_;
+  std::vector<Vector6> extrinsics_;  // [k - 1]
+};
+
+}  // namespace lrsvo
