@@ -44,31 +44,31 @@ Trajectory readTrajectory(const std::string& file, PoseFileFormat format, const 
 }
 
 void printRow(const char* name, double value, const char* unit) {
-  std::printf("  %-34s %12.4f  %s\n", name, value, unit);
+  std::printf("  %-40s %12.4f  %s\n", name, value, unit);
 }
 
 void printStatistics(const std::string& name, const ErrorStatistics& s, double factor, const char* unit) {
-  std::printf("  %-34s %12.4f  %s  (mean %.4f, median %.4f, max %.4f)\n", (name + " RMSE").c_str(), factor * s.rmse,
+  std::printf("  %-40s %12.4f  %s  (mean %.4f, median %.4f, max %.4f)\n", (name + " RMSE").c_str(), factor * s.rmse,
               unit, factor * s.mean, factor * s.median, factor * s.max);
 }
 
 void printMetrics(const TrajectoryMetrics& m) {
-  std::printf("  %-34s %12zu\n", "matched poses", m.frames);
+  std::printf("  %-40s %12zu\n", "matched poses", m.frames);
   printRow("distance (truth path length)", m.distance_m, "m");
   printStatistics("ATE, SE3-aligned", m.ate_m, 1.0, "m");
   printStatistics("ATE orientation, SE3-aligned", m.ateRotation_rad, kDegreesPerRadian, "deg");
   printStatistics("ATE, Sim3-aligned", m.ateSim3_m, 1.0, "m");
   printRow("Sim3 scale", m.sim3.scale, "");
-  const std::string frames = "RPE over " + std::to_string(m.options.rpeDeltaFrames) + " frames";
+  const std::string frames = "RPE, delta " + std::to_string(m.options.rpeDeltaFrames) + " frame(s)";
   printStatistics(frames + ", translation", m.rpeTranslation_m, 1.0, "m");
   printStatistics(frames + ", rotation", m.rpeRotation_rad, kDegreesPerRadian, "deg");
   char metres[64];
-  std::snprintf(metres, sizeof metres, "RPE over %g m", m.options.rpeDelta_m);
+  std::snprintf(metres, sizeof metres, "RPE, delta %g m", m.options.rpeDelta_m);
   if (m.rpeDistanceTranslation_m.count > 0) {
     printStatistics(std::string(metres) + ", translation", m.rpeDistanceTranslation_m, 1.0, "m");
     printStatistics(std::string(metres) + ", rotation", m.rpeDistanceRotation_rad, kDegreesPerRadian, "deg");
   } else {
-    std::printf("  %-34s %12s  (the truth is shorter)\n", metres, "-");
+    std::printf("  %-40s %12s  (the truth is shorter)\n", metres, "-");
   }
   if (m.drift.segments > 0) {
     printRow("KITTI drift, translation", m.drift.translation_percent, "%");
@@ -77,7 +77,7 @@ void printMetrics(const TrajectoryMetrics& m) {
       std::printf("    %5.0f m segments (%4zu)  %8.4f %%  %8.4f deg/100 m\n", d.length_m, d.segments,
                   d.translation_percent, d.rotation_deg_per_100m);
   } else {
-    std::printf("  %-34s %12s  (no segment length fits the truth)\n", "KITTI drift", "-");
+    std::printf("  %-40s %12s  (no segment length fits the truth)\n", "KITTI drift", "-");
   }
   printRow("scale error (path lengths)", m.scaleErrorPercent, "%");
   printRow("final position error, start-aligned", m.finalPositionError_m, "m");
@@ -142,7 +142,7 @@ const char* kEvalFooter =
     "               RMSE, mean, median, max in m; orientation error angle(R_q^T R R_p) in deg.\n"
     "  RPE          E = (Q_i^-1 Q_j)^-1 (P_i^-1 P_j) with j = i + delta frames (--delta) or j the first frame\n"
     "               --delta-m metres along the truth; |t(E)| (m) and angle(E) (deg). Pairs chained like evo's\n"
-    "               default, or starting at every frame with --all-pairs. No alignment (RPE ignores it).\n"
+    "               default, or starting at every frame with --all-pairs. On the raw estimate (rigid moves cancel).\n"
     "  KITTI drift  the devkit's evaluate_odometry: segments of 100, 200, ..., 800 m (--segment-lengths)\n"
     "               starting every 10th frame; per segment |t(E)| / length and angle(E) / length; the\n"
     "               average over all segments in % and deg/100 m, and per length.\n"

@@ -46,7 +46,7 @@ std::filesystem::path plottingScript(const std::string& name) {
 std::string plottingCommand(const std::string& python, const std::filesystem::path& script,
                             const std::vector<std::string>& arguments) {
   std::string command = shellQuoted(python) + " " + shellQuoted(script.string());
-  for (const std::string& argument : arguments) command += " " + shellQuoted(argument);
+  for (const std::string& argument : arguments) command.append(" ").append(shellQuoted(argument));
   return command;
 }
 
