@@ -1,6 +1,5 @@
 #include "eval/trajectory_plots.h"
 
-#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
