@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "eval/plotting.h"
 #include "graph/error.h"
 
 namespace lrsvo {
@@ -31,30 +32,6 @@ std::string csvField(const std::string& text) {
 }
 
 nlohmann::json numberOrNull(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(); }
-
-// The plotting scripts: $LRSVO_PLOTS_DIR, the source tree, then the install tree.
-std::filesystem::path plotScript(const std::string& study) {
-  std::vector<std::filesystem::path> places;
-  if (const char* dir = std::getenv("LRSVO_PLOTS_DIR")) places.emplace_back(dir);
-  places.emplace_back(std::filesystem::path(LRSVO_SOURCE_DIR) / "eval" / "plots");
-  places.emplace_back(std::filesystem::path(LRSVO_INSTALL_DATADIR) / "plots");
-  for (const auto& place : places) {
-    const std::filesystem::path script = place / (study + ".py");
-    if (std::filesystem::exists(script)) return script;
-  }
-  return {};
-}
-
-std::string shellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-bool canImportMatplotlib(const std::string& python) {
-  const std::string command = shellQuoted(python) + " -c 'import matplotlib' >/dev/null 2>&1";
-  return std::system(command.c_str()) == 0;
-}
 
 }  // namespace
 
@@ -105,15 +82,14 @@ void StudyReport::write(const StudyOptions& options) const {
 
   std::string plotNote;
   if (options.plot) {
-    const std::filesystem::path script = plotScript(study_);
+    const std::filesystem::path script = plottingScript(study_);
     const std::string python = script.empty() ? std::string() : plottingPython();
     if (script.empty()) {
       plotNote = "no plotting script eval/plots/" + study_ + ".py";
     } else if (python.empty()) {
       plotNote = "plot skipped: no Python with matplotlib (install python3-matplotlib or set LRSVO_PYTHON)";
     } else {
-      const std::string command =
-          shellQuoted(python) + " " + shellQuoted(script.string()) + " " + shellQuoted(options.outDir.string());
+      const std::string command = plottingCommand(python, script, {options.outDir.string()});
       if (std::system(command.c_str()) != 0) throw Error("study " + study_ + ": the plot failed: " + command);
       files.push_back(study_ + ".png");
     }
@@ -162,19 +138,6 @@ void StudyReport::print(std::ostream& out) const {
   }
   std::snprintf(line, sizeof line, "  (%.1f s)\n", seconds_);
   out << line;
-}
-
-std::string plottingPython() {
-  static const std::string found = [] {
-    std::vector<std::string> candidates;
-    if (const char* python = std::getenv("LRSVO_PYTHON")) candidates.emplace_back(python);
-    candidates.emplace_back("python3");
-    candidates.emplace_back("/usr/bin/python3");
-    for (const std::string& candidate : candidates)
-      if (canImportMatplotlib(candidate)) return candidate;
-    return std::string();
-  }();
-  return found;
 }
 
 std::vector<Study>& studies() {

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "eval/plotting.h"
+
 namespace lrsvo {
 
 // Settings every study takes (`lrsvo study NAME --seed --trials --out`).
@@ -86,11 +88,6 @@ struct Study {
   int paperTrials = 0;  // the paper's trial count (0: not a Monte Carlo study)
   std::function<StudyReport(const StudyOptions&)> run;
 };
-
-// The Python interpreter that plots: $LRSVO_PYTHON, else `python3` on the
-// PATH, else /usr/bin/python3 (Debian's, where python3-matplotlib installs),
-// the first that can import matplotlib. Empty when none can.
-std::string plottingPython();
 
 std::vector<Study>& studies();
 const Study& findStudy(const std::string& name);  // throws lrsvo::Error listing the known names
