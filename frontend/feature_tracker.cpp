@@ -1,0 +1,156 @@
+#include "frontend/feature_tracker.h"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <unordered_set>
+
+#include <opencv2/core.hpp>
+
+#include "graph/error.h"
+
+namespace lrsvo {
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<cv::Point2f> pixelsOf(const std::vector<Track>& tracks) {
+  std::vector<cv::Point2f> pixels;
+  pixels.reserve(tracks.size());
+  for (const Track& t : tracks) pixels.push_back(t.pixel);
+  return pixels;
+}
+
+}  // namespace
+
+FeatureTracker::FeatureTracker(const FeatureTrackerOptions& options) : options_(options), detector_(options.detector) {
+  if (options.targetFeatures < 1) throw Error("feature tracker: targetFeatures must be at least 1");
+  if (!(options.descriptorRatio > 0.0 && options.descriptorRatio <= 1.0))
+    throw Error("feature tracker: descriptorRatio must lie in (0, 1]");
+}
+
+const std::vector<Track>& FeatureTracker::track(const KltImage& image) {
+  statistics_ = {};
+  for (Track& t : tracks_) ++t.age;
+  if (detector_.hasDescriptors()) {
+    const auto detectStart = std::chrono::steady_clock::now();
+    DetectedFeatures candidates = detector_.detect(image.image, {}, 2 * options_.targetFeatures);
+    statistics_.detect_ms = millisecondsSince(detectStart);
+    const auto trackStart = std::chrono::steady_clock::now();
+    followByDescriptor(candidates);
+    statistics_.track_ms = millisecondsSince(trackStart);
+    statistics_.tracked = static_cast<int>(tracks_.size());
+    addNew(std::move(candidates), options_.targetFeatures - statistics_.tracked);
+  } else {
+    const auto trackStart = std::chrono::steady_clock::now();
+    followByKlt(image);
+    statistics_.track_ms = millisecondsSince(trackStart);
+    statistics_.tracked = static_cast<int>(tracks_.size());
+    const int wanted = options_.targetFeatures - statistics_.tracked;
+    if (wanted > 0) {
+      const auto detectStart = std::chrono::steady_clock::now();
+      addNew(detector_.detect(image.image, pixelsOf(tracks_), wanted), wanted);
+      statistics_.detect_ms = millisecondsSince(detectStart);
+    }
+  }
+  previous_ = image;
+  return tracks_;
+}
+
+void FeatureTracker::followByKlt(const KltImage& image) {
+  if (tracks_.empty()) return;
+  const std::vector<cv::Point2f> points = pixelsOf(tracks_);
+  std::vector<cv::Point2f> positions = points;
+  const std::vector<bool> found = trackKlt(previous_, image, points, positions, options_.klt);
+  std::vector<Track> kept;
+  for (std::size_t i = 0; i < tracks_.size(); ++i) {
+    if (!found[i]) continue;
+    kept.push_back(tracks_[i]);
+    kept.back().pixel = positions[i];
+  }
+  tracks_ = std::move(kept);
+}
+
+// Each track takes the candidate with the nearest descriptor inside the search
+// radius when it passes the ratio test; a candidate claimed by several tracks
+// goes to the closest in descriptor distance. Matched candidates leave the pool.
+void FeatureTracker::followByDescriptor(const DetectedFeatures& candidates) {
+  const double radius2 = options_.descriptorSearch_px * options_.descriptorSearch_px;
+  std::vector<int> bestCandidate(tracks_.size(), -1);
+  std::vector<int> bestDistance(tracks_.size(), std::numeric_limits<int>::max());
+  for (std::size_t t = 0; t < tracks_.size(); ++t) {
+    int best = std::numeric_limits<int>::max(), second = std::numeric_limits<int>::max(), bestIndex = -1;
+    for (int c = 0; c < static_cast<int>(candidates.points.size()); ++c) {
+      const cv::Point2f d = candidates.points[static_cast<std::size_t>(c)] - tracks_[t].pixel;
+      if (d.dot(d) > radius2) continue;
+      const int distance =
+          static_cast<int>(cv::norm(tracks_[t].descriptor, candidates.descriptors.row(c), cv::NORM_HAMMING));
+      if (distance < best) {
+        second = best;
+        best = distance;
+        bestIndex = c;
+      } else if (distance < second) {
+        second = distance;
+      }
+    }
+    if (bestIndex < 0 || best > options_.maxHamming) continue;
+    if (second != std::numeric_limits<int>::max() && best >= options_.descriptorRatio * second) continue;
+    bestCandidate[t] = bestIndex;
+    bestDistance[t] = best;
+  }
+  std::vector<int> owner(candidates.points.size(), -1);
+  for (std::size_t t = 0; t < tracks_.size(); ++t) {
+    const int c = bestCandidate[t];
+    if (c < 0) continue;
+    int& o = owner[static_cast<std::size_t>(c)];
+    if (o < 0 || bestDistance[t] < bestDistance[static_cast<std::size_t>(o)]) o = static_cast<int>(t);
+  }
+  std::vector<Track> kept;
+  for (std::size_t c = 0; c < owner.size(); ++c) {
+    if (owner[c] < 0) continue;
+    Track t = tracks_[static_cast<std::size_t>(owner[c])];
+    t.pixel = candidates.points[c];
+    t.descriptor = candidates.descriptors.row(static_cast<int>(c)).clone();
+    kept.push_back(std::move(t));
+  }
+  // Keep the order of ids so that output does not depend on candidate order.
+  std::sort(kept.begin(), kept.end(), [](const Track& a, const Track& b) { return a.id < b.id; });
+  tracks_ = std::move(kept);
+}
+
+// New tracks from `features` (strongest first), skipping any within the
+// detector's minimum distance of a live track.
+void FeatureTracker::addNew(DetectedFeatures features, int wanted) {
+  if (wanted <= 0) return;
+  const double min2 = options_.detector.minDistance_px * options_.detector.minDistance_px;
+  const std::size_t live = tracks_.size();
+  for (std::size_t i = 0; i < features.points.size() && statistics_.added < wanted; ++i) {
+    const cv::Point2f& p = features.points[i];
+    const bool crowded =
+        std::any_of(tracks_.begin(), tracks_.begin() + static_cast<std::ptrdiff_t>(live), [&](const Track& t) {
+          const cv::Point2f d = t.pixel - p;
+          return d.dot(d) < min2;
+        });
+    if (crowded) continue;
+    Track t;
+    t.id = nextId_++;
+    t.pixel = p;
+    if (!features.descriptors.empty()) t.descriptor = features.descriptors.row(static_cast<int>(i)).clone();
+    tracks_.push_back(std::move(t));
+    ++statistics_.added;
+  }
+}
+
+void FeatureTracker::drop(const std::vector<int>& ids) {
+  const std::unordered_set<int> gone(ids.begin(), ids.end());
+  std::erase_if(tracks_, [&](const Track& t) { return gone.count(t.id) > 0; });
+}
+
+void FeatureTracker::reset() {
+  tracks_.clear();
+  previous_ = {};
+}
+
+}  // namespace lrsvo

@@ -1,0 +1,69 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "frontend/feature_detector.h"
+#include "frontend/klt.h"
+
+namespace lrsvo {
+
+// How the base camera's features are followed from frame to frame. The mode
+// follows the detector: "klt" (pyramidal Lucas-Kanade, forward-backward
+// checked) for detectors without descriptors (gftt, fast); "descriptor"
+// (ORB Hamming matching near the previous position, ratio test) for orb.
+struct FeatureTrackerOptions {
+  DetectorOptions detector;
+  int targetFeatures = 300;  // top up with new features when fewer survive
+  KltOptions klt;
+  double descriptorSearch_px = 40.0;  // "descriptor": radius around the previous position
+  double descriptorRatio = 0.8;       // best distance below this times the second best
+  int maxHamming = 64;                // "descriptor": worst accepted distance (of 256 bits)
+};
+
+// One feature followed in the base camera, at its raw (distorted) pixel.
+struct Track {
+  int id = -1;
+  cv::Point2f pixel;
+  int age = 0;         // frames since it was detected (0 = new this frame)
+  cv::Mat descriptor;  // one row, "descriptor" mode only
+};
+
+struct TrackerStatistics {
+  int tracked = 0;  // tracks continued from the previous frame
+  int added = 0;    // new tracks detected this frame
+  double track_ms = 0.0;
+  double detect_ms = 0.0;
+};
+
+// Keeps the tracks of the base camera. Track ids are never reused, not even
+// after reset(). Outliers among the tracks are removed from outside with
+// drop() (the front end's fundamental-matrix check, the back end's rejects).
+class FeatureTracker {
+ public:
+  explicit FeatureTracker(const FeatureTrackerOptions& options);
+  std::string mode() const { return detector_.hasDescriptors() ? "descriptor" : "klt"; }
+  // Follows the tracks into the next image, then tops them up.
+  const std::vector<Track>& track(const KltImage& image);
+  const std::vector<Track>& tracks() const { return tracks_; }
+  const TrackerStatistics& lastStatistics() const { return statistics_; }
+  void drop(const std::vector<int>& ids);
+  // Forgets every track (after tracking loss); the next image starts afresh.
+  void reset();
+
+ private:
+  void followByKlt(const KltImage& image);
+  void followByDescriptor(const DetectedFeatures& candidates);
+  void addNew(DetectedFeatures features, int wanted);
+
+  FeatureTrackerOptions options_;
+  FeatureDetector detector_;
+  std::vector<Track> tracks_;
+  KltImage previous_;
+  int nextId_ = 0;
+  TrackerStatistics statistics_;
+};
+
+}  // namespace lrsvo

@@ -1,0 +1,136 @@
+#include "frontend/image_front_end.h"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <unordered_set>
+
+#include "frontend/fundamental_check.h"
+#include "graph/error.h"
+
+namespace lrsvo {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+ImageFrontEnd::ImageFrontEnd(const Rig& rig, const std::vector<LensDistortion>& distortion,
+                             const ImageFrontEndOptions& options)
+    : rig_(rig),
+      options_(options),
+      tracker_(options.tracker),
+      baseUndistorter_(rig.cameras.at(0).intrinsics, distortion.at(0)),
+      rng_(options.seed) {
+  rig.validate();
+  if (distortion.size() != rig.cameras.size())
+    throw Error("image front end: " + std::to_string(rig.cameras.size()) + " cameras need as many lens models, got " +
+                std::to_string(distortion.size()));
+  for (int k = 1; k <= rig.secondaryCount(); ++k) matchers_.emplace_back(rig, k, distortion, options.stereo);
+  // The base pyramid serves both tracking in time and stereo matching: its
+  // border and depth must suit the larger window and the deeper pyramid.
+  pyramid_.window_px = std::max(options.tracker.klt.window_px, options.stereo.klt.window_px);
+  pyramid_.levels = std::max(options.tracker.klt.levels, options.stereo.klt.levels);
+}
+
+void ImageFrontEnd::checkFrame(const StereoFrame& frame) const {
+  if (frame.images.size() != rig_.cameras.size())
+    throw Error("image front end: frame " + std::to_string(frame.index) + " has " +
+                std::to_string(frame.images.size()) + " images, the rig " + std::to_string(rig_.cameras.size()) +
+                " cameras");
+  for (std::size_t c = 0; c < frame.images.size(); ++c) {
+    const cv::Mat& image = frame.images[c];
+    if (image.cols != rig_.cameras[c].width || image.rows != rig_.cameras[c].height || image.type() != CV_8UC1)
+      throw Error("image front end: frame " + std::to_string(frame.index) + ", camera " + std::to_string(c) +
+                  ": expected an 8-bit grey image of " + std::to_string(rig_.cameras[c].width) + "x" +
+                  std::to_string(rig_.cameras[c].height));
+  }
+}
+
+int ImageFrontEnd::rejectOutliers(const std::vector<Track>& tracks, const std::vector<Eigen::Vector2d>& pixels) {
+  std::vector<int> ids;
+  std::vector<Eigen::Vector2d> before, after;
+  for (std::size_t i = 0; i < tracks.size(); ++i) {
+    const auto previous = previousPixel_.find(tracks[i].id);
+    if (previous == previousPixel_.end()) continue;
+    ids.push_back(tracks[i].id);
+    before.push_back(previous->second);
+    after.push_back(pixels[i]);
+  }
+  const std::vector<bool> inlier = fundamentalInliers(before, after, options_.fundamentalThreshold_px, rng_);
+  std::vector<int> outliers;
+  for (std::size_t j = 0; j < ids.size(); ++j)
+    if (!inlier[j]) outliers.push_back(ids[j]);
+  tracker_.drop(outliers);
+  return static_cast<int>(outliers.size());
+}
+
+FrameObservations ImageFrontEnd::process(const StereoFrame& frame) {
+  checkFrame(frame);
+  timings_ = {};
+  const Clock::time_point start = Clock::now();
+  const KltImage base = makeKltImage(frame.images[0], pyramid_);
+  const double pyramid_ms = millisecondsSince(start);
+  tracker_.track(base);
+  const TrackerStatistics& statistics = tracker_.lastStatistics();
+  timings_.detect_ms = statistics.detect_ms;
+  timings_.track_ms = pyramid_ms + statistics.track_ms;
+  timings_.added = statistics.added;
+
+  Clock::time_point stage = Clock::now();
+  std::vector<cv::Point2f> raw;
+  for (const Track& t : tracker_.tracks()) raw.push_back(t.pixel);
+  std::vector<Eigen::Vector2d> pixels = baseUndistorter_.undistort(raw);
+  timings_.undistort_ms = millisecondsSince(stage);
+
+  stage = Clock::now();
+  if (options_.fundamentalCheck && (timings_.rejected = rejectOutliers(tracker_.tracks(), pixels)) > 0) {
+    raw.clear();
+    for (const Track& t : tracker_.tracks()) raw.push_back(t.pixel);
+    pixels = baseUndistorter_.undistort(raw);
+  }
+  timings_.track_ms += millisecondsSince(stage);
+  const std::vector<Track>& tracks = tracker_.tracks();
+  timings_.tracked = static_cast<int>(tracks.size()) - timings_.added;
+
+  FrameObservations observations;
+  observations.time_s = frame.time_s;
+  std::vector<int> ids;
+  previousPixel_.clear();
+  for (std::size_t i = 0; i < tracks.size(); ++i) {
+    ids.push_back(tracks[i].id);
+    observations.observations.push_back({tracks[i].id, 0, pixels[i]});
+    previousPixel_[tracks[i].id] = pixels[i];
+  }
+
+  stage = Clock::now();
+  std::unordered_set<int> matchedSomewhere;
+  for (std::size_t k = 0; k < matchers_.size(); ++k) {
+    const KltImage secondary = makeKltImage(frame.images[k + 1], pyramid_);
+    for (const StereoMatch& m : matchers_[k].match(base, secondary, ids, raw, pixels)) {
+      observations.observations.push_back({m.track, static_cast<int>(k + 1), m.pixel});
+      matchedSomewhere.insert(m.track);
+    }
+  }
+  timings_.stereo_ms = millisecondsSince(stage);
+  timings_.stereoMatched = static_cast<int>(matchedSomewhere.size());
+  timings_.total_ms = millisecondsSince(start);
+  return observations;
+}
+
+void ImageFrontEnd::dropTracks(const std::vector<int>& trackIds) {
+  tracker_.drop(trackIds);
+  for (int id : trackIds) previousPixel_.erase(id);
+}
+
+void ImageFrontEnd::reset() {
+  tracker_.reset();
+  for (StereoMatcher& matcher : matchers_) matcher.reset();
+  previousPixel_.clear();
+}
+
+}  // namespace lrsvo

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <unordered_map>
+#include <vector>
+
+#include "frontend/feature_tracker.h"
+#include "frontend/frame_source.h"
+#include "frontend/observations.h"
+#include "frontend/rig.h"
+#include "frontend/stereo_matcher.h"
+#include "frontend/undistortion.h"
+
+namespace lrsvo {
+
+struct ImageFrontEndOptions {
+  FeatureTrackerOptions tracker;  // detector name, target feature count, KLT window and levels
+  StereoMatcherOptions stereo;    // band width, depth range
+  // Frame-to-frame tracks are checked against a RANSAC fundamental matrix on
+  // undistorted pixels; gross outliers are dropped here, the rest is the back end's.
+  bool fundamentalCheck = true;
+  double fundamentalThreshold_px = 1.0;
+  std::uint64_t seed = 1;  // the fundamental matrix RANSAC's draws
+};
+
+// What the last process() call did, and how long each stage took.
+struct FrontEndTimings {
+  double detect_ms = 0.0;
+  double track_ms = 0.0;      // base pyramid, KLT or descriptor matching, fundamental check
+  double stereo_ms = 0.0;     // secondary pyramids and matching (its own undistortion included)
+  double undistort_ms = 0.0;  // base features
+  double total_ms = 0.0;
+  int tracked = 0;        // tracks continued from the previous frame (after the fundamental check)
+  int added = 0;          // new tracks
+  int rejected = 0;       // dropped by the fundamental check
+  int stereoMatched = 0;  // base tracks found in at least one secondary camera
+};
+
+// From a rig's images to the observations the odometry consumes: features are
+// tracked in the base camera over time and matched into each secondary camera
+// inside a loosened epipolar band; positions are undistorted last. Each track
+// is observed in camera 0 always and in camera k when matched there.
+class ImageFrontEnd {
+ public:
+  ImageFrontEnd(const Rig& rig, const std::vector<LensDistortion>& distortion, const ImageFrontEndOptions& options);
+  FrameObservations process(const StereoFrame& frame);
+  // The back end rejected these tracks as outliers: never report them again.
+  void dropTracks(const std::vector<int>& trackIds);
+  // After tracking loss: forget every track; new ones get fresh ids.
+  void reset();
+  const FrontEndTimings& lastTimings() const { return timings_; }
+
+ private:
+  void checkFrame(const StereoFrame& frame) const;
+  // Drops the continued tracks that break the fundamental matrix; returns how many.
+  int rejectOutliers(const std::vector<Track>& tracks, const std::vector<Eigen::Vector2d>& pixels);
+
+  Rig rig_;
+  ImageFrontEndOptions options_;
+  FeatureTracker tracker_;
+  Undistorter baseUndistorter_;
+  std::vector<StereoMatcher> matchers_;  // [k - 1]
+  KltOptions pyramid_;                   // how every image's pyramid is built
+  std::mt19937_64 rng_;
+  std::unordered_map<int, Eigen::Vector2d> previousPixel_;  // undistorted base pixel by track, last frame
+  FrontEndTimings timings_;
+};
+
+}  // namespace lrsvo
