@@ -1,0 +1,129 @@
+#include "eval/odometry_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ostream>
+
+#include "eval/run_writer.h"
+#include "frontend/odometry.h"
+#include "graph/error.h"
+
+namespace lrsvo {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+void addTimings(FrontEndTimings& sum, const FrontEndTimings& t) {
+  sum.detect_ms += t.detect_ms;
+  sum.track_ms += t.track_ms;
+  sum.stereo_ms += t.stereo_ms;
+  sum.undistort_ms += t.undistort_ms;
+  sum.total_ms += t.total_ms;
+  sum.tracked += t.tracked;
+  sum.added += t.added;
+  sum.rejected += t.rejected;
+  sum.stereoMatched += t.stereoMatched;
+}
+
+void addTimes(StageTimes& sum, const StageTimes& t) {
+  sum.initialize_ms += t.initialize_ms;
+  sum.pose_ms += t.pose_ms;
+  sum.triangulate_ms += t.triangulate_ms;
+  sum.bundle_ms += t.bundle_ms;
+}
+
+void showProgress(std::ostream& out, const RunTotals& totals, double wall_s, int frameCount, bool last) {
+  char line[160];
+  if (frameCount > 0)
+    std::snprintf(line, sizeof line, "\rframe %d/%d  tracked %d  odometry %.1f fps  ETA %.0f s   ", totals.frames,
+                  frameCount, totals.tracked, totals.fps(), wall_s / totals.frames * (frameCount - totals.frames));
+  else
+    std::snprintf(line, sizeof line, "\rframe %d  tracked %d  odometry %.1f fps   ", totals.frames, totals.tracked,
+                  totals.fps());
+  out << line << (last ? "\n" : "") << std::flush;
+}
+
+}  // namespace
+
+OdometryPipeline::OdometryPipeline(const FrameSource& source, const RunOptions& options)
+    : odometry_(std::make_unique<Odometry>(source.rig(), options.odometry)),
+      frontEnd_(std::make_unique<ImageFrontEnd>(source.rig(), source.distortion(), options.frontEnd)) {
+  if (!options.outDir.empty()) writer_ = std::make_unique<RunWriter>(options.outDir, source.rig(), source.groundTruth());
+}
+
+OdometryPipeline::~OdometryPipeline() = default;
+
+void OdometryPipeline::process(const StereoFrame& frame) {
+  RunTotals& totals = result_.totals;
+  auto start = Clock::now();
+  const FrameObservations observations = frontEnd_->process(frame);
+  totals.frontEndSeconds += secondsSince(start);
+  addTimings(totals.frontEnd, frontEnd_->lastTimings());
+  pendingTimings_.push_back(frontEnd_->lastTimings());
+
+  start = Clock::now();
+  const std::vector<FrameEstimate> estimates = odometry_->process(observations);
+  frontEnd_->dropTracks(odometry_->takeRejectedTracks());
+  totals.backEndSeconds += secondsSince(start);
+  ++totals.frames;
+  record(estimates);
+}
+
+RunResult OdometryPipeline::finish() {
+  record(odometry_->finish());
+  writer_.reset();  // flushes and closes the files
+  return std::move(result_);
+}
+
+void OdometryPipeline::record(const std::vector<FrameEstimate>& estimates) {
+  RunTotals& totals = result_.totals;
+  for (const FrameEstimate& estimate : estimates) {
+    if (pendingTimings_.empty()) throw Error("odometry pipeline: an estimate for a frame never processed");
+    const FrontEndTimings timings = pendingTimings_.front();
+    pendingTimings_.pop_front();
+    addTimes(totals.backEnd, estimate.times);
+    totals.tracked += estimate.tracked;
+    totals.keyframes += estimate.keyframe;
+    totals.segments = std::max(totals.segments, estimate.segment + 1);
+    result_.segments.push_back(estimate.tracked ? estimate.segment : -1);
+    if (estimate.tracked) result_.trajectory.add(estimate.time_s, estimate.cameraFromWorld.inverse());
+    if (writer_) writer_->write(estimate, timings);
+  }
+}
+
+std::vector<RunResult> runOdometry(FrameSource& source, const std::vector<RunOptions>& variants) {
+  if (variants.empty()) throw Error("runOdometry: no variant to run");
+  std::vector<std::unique_ptr<OdometryPipeline>> pipelines;
+  for (const RunOptions& options : variants) pipelines.push_back(std::make_unique<OdometryPipeline>(source, options));
+  const RunOptions& first = variants.front();
+  int frameCount = source.frameCount();
+  if (first.maxFrames >= 0 && (frameCount < 0 || first.maxFrames < frameCount)) frameCount = first.maxFrames;
+
+  const auto start = Clock::now();
+  double sourceSeconds = 0.0;
+  for (int frames = 0; frameCount < 0 || frames < frameCount; ++frames) {
+    const auto read = Clock::now();
+    std::optional<StereoFrame> frame = source.next();
+    sourceSeconds += secondsSince(read);
+    if (!frame) break;
+    for (auto& pipeline : pipelines) pipeline->process(*frame);
+    if (first.progress && (frames + 1) % 10 == 0)
+      showProgress(*first.progress, pipelines.front()->totals(), secondsSince(start), frameCount, false);
+  }
+  if (first.progress) showProgress(*first.progress, pipelines.front()->totals(), secondsSince(start), frameCount, true);
+  std::vector<RunResult> results;
+  for (auto& pipeline : pipelines) {
+    results.push_back(pipeline->finish());
+    results.back().totals.sourceSeconds = sourceSeconds;
+  }
+  return results;
+}
+
+RunResult runOdometry(FrameSource& source, const RunOptions& options) {
+  return std::move(runOdometry(source, std::vector<RunOptions>{options}).front());
+}
+
+}  // namespace lrsvo

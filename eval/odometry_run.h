@@ -1,0 +1,78 @@
+#pragma once
+
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "eval/pose_file.h"
+#include "frontend/frame_estimate.h"
+#include "frontend/frame_source.h"
+#include "frontend/image_front_end.h"
+#include "frontend/odometry_options.h"
+
+namespace lrsvo {
+
+class Odometry;
+class RunWriter;
+
+struct RunOptions {
+  OdometryOptions odometry;
+  ImageFrontEndOptions frontEnd;
+  int maxFrames = -1;                // < 0: every frame of the source
+  std::filesystem::path outDir;      // empty: write nothing
+  std::ostream* progress = nullptr;  // one updating line: frame, fps, ETA (of the first variant's options)
+};
+
+// Sums over a run; the odometry's own time excludes reading or rendering frames.
+struct RunTotals {
+  int frames = 0;
+  int tracked = 0;
+  int keyframes = 0;
+  int segments = 0;
+  double frontEndSeconds = 0.0;  // features, tracking, stereo matching
+  double backEndSeconds = 0.0;   // initialisation, pose, triangulation, window adjustment
+  double sourceSeconds = 0.0;    // reading or rendering frames (not the odometry's)
+  FrontEndTimings frontEnd;      // per-stage sums (ms) and counts
+  StageTimes backEnd;            // per-stage sums (ms)
+  double odometrySeconds() const { return frontEndSeconds + backEndSeconds; }
+  double fps() const { return odometrySeconds() > 0.0 ? frames / odometrySeconds() : 0.0; }
+};
+
+struct RunResult {
+  RunTotals totals;
+  Trajectory trajectory;  // base camera, world-from-camera, tracked frames only
+  // Per input frame, whether it was tracked and its segment (gaps show as -1).
+  std::vector<int> segments;
+};
+
+// The image front end and the odometry for one source, fed frame by frame.
+// With an output folder, it streams trajectory.tum, extrinsics.csv and
+// frames.csv into it as frames are estimated (memory stays flat).
+class OdometryPipeline {
+ public:
+  OdometryPipeline(const FrameSource& source, const RunOptions& options);
+  ~OdometryPipeline();
+  void process(const StereoFrame& frame);
+  // Ends the run (frames still buffered for an initialisation stay untracked).
+  RunResult finish();
+  const RunTotals& totals() const { return result_.totals; }
+
+ private:
+  void record(const std::vector<FrameEstimate>& estimates);
+
+  std::unique_ptr<Odometry> odometry_;
+  std::unique_ptr<ImageFrontEnd> frontEnd_;
+  std::unique_ptr<RunWriter> writer_;
+  std::deque<FrontEndTimings> pendingTimings_;  // wait with their frame while the odometry buffers it
+  RunResult result_;
+};
+
+// Runs one pipeline over a source, or several over the same frames (each
+// frame read or rendered once); the source's time is added to every totals.
+RunResult runOdometry(FrameSource& source, const RunOptions& options);
+std::vector<RunResult> runOdometry(FrameSource& source, const std::vector<RunOptions>& variants);
+
+}  // namespace lrsvo

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "eval/odometry_run.h"
+#include "frontend/frame_source.h"
+
+namespace lrsvo {
+
+// What a finished run reports: its counts and speed, and, when the source
+// knows the truth, the trajectory metrics (eval/trajectory_metrics.h).
+struct RunReport {
+  nlohmann::json metrics;                   // also written as metrics.json
+  std::vector<std::filesystem::path> plots;  // PNGs written
+  std::string warning;                       // why plots or metrics are missing, if they are
+};
+
+// Writes metrics.json (frames, frames_tracked, segments, fps, time per stage,
+// and with the truth distance_m, ate_rmse_m, drift_percent,
+// scale_error_percent, ...) and the plots (trajectory against truth, position
+// and orientation error over time, the extrinsic's six parameters over time
+// with their bounds) into outDir.
+RunReport writeRunReport(const std::filesystem::path& outDir, const RunResult& run, const GroundTruth& truth,
+                         bool plots);
+
+}  // namespace lrsvo

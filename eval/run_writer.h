@@ -1,0 +1,29 @@
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+
+#include "frontend/frame_estimate.h"
+#include "frontend/frame_source.h"
+#include "frontend/image_front_end.h"
+
+namespace lrsvo {
+
+// Streams a run's outputs into a folder as frames are estimated:
+//  trajectory.tum  tracked frames, `t tx ty tz qx qy qz qw` (world-from-camera of the base camera);
+//  extrinsics.csv  per tracked frame and secondary camera, the estimated S and, when known, the true one;
+//  frames.csv      per frame: tracked, keyframe, segment, feature counts, window error, time per stage (ms);
+//  rig.json        the calibration and the tolerances (the box the bounded S lives in).
+// Throws lrsvo::Error when the folder cannot be written.
+class RunWriter {
+ public:
+  RunWriter(const std::filesystem::path& outDir, const Rig& rig, GroundTruth truth);
+  void write(const FrameEstimate& estimate, const FrontEndTimings& frontEnd);
+
+ private:
+  Rig rig_;
+  GroundTruth truth_;
+  std::ofstream trajectory_, extrinsics_, frames_;
+};
+
+}  // namespace lrsvo

@@ -1,0 +1,47 @@
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "eval/odometry_run.h"
+#include "eval/run_report.h"
+#include "frontend/euroc_reader.h"
+
+namespace lrsvo {
+namespace {
+
+const std::string kEuroc = LRSVO_SHARED_DATA "/euroc_v101_micro";
+
+// Real EuRoC frames of a nearly still vehicle (~2 mm in 4.7 s): too little
+// parallax to initialise. The odometry must neither crash nor invent motion:
+// every frame it poses lies within centimetres of the first.
+TEST(OdometryRunEuroc, NearlyStillSequenceInventsNoMotion) {
+  EurocSource source(kEuroc);
+  const std::filesystem::path out = std::filesystem::path(testing::TempDir()) / "lrsvo_run_euroc";
+  std::filesystem::remove_all(out);
+  RunOptions options;
+  options.outDir = out;
+  options.frontEnd.stereo.minDepth_m = 0.5;  // a room, not a flight at 30-120 m
+  const RunResult run = runOdometry(source, options);
+  EXPECT_EQ(run.totals.frames, source.frameCount());
+  EXPECT_EQ(static_cast<int>(run.segments.size()), run.totals.frames);
+  EXPECT_GT(run.totals.frontEnd.tracked, 0);
+  for (const Eigen::Isometry3d& pose : run.trajectory.worldFromCamera)
+    EXPECT_LT((pose.translation() - run.trajectory.worldFromCamera.front().translation()).norm(), 0.05);
+
+  const RunReport report = writeRunReport(out, run, source.groundTruth(), false);
+  EXPECT_EQ(report.metrics["frames"], run.totals.frames);
+  EXPECT_EQ(report.metrics["frames_tracked"], run.totals.tracked);
+  for (const char* file : {"trajectory.tum", "frames.csv", "extrinsics.csv", "rig.json", "metrics.json"})
+    EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
+  // frames.csv: a header and one line per frame.
+  std::ifstream frames(out / "frames.csv");
+  int lines = 0;
+  for (std::string line; std::getline(frames, line);) ++lines;
+  EXPECT_EQ(lines, run.totals.frames + 1);
+}
+
+}  // namespace
+}  // namespace lrsvo
