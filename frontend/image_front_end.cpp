@@ -110,7 +110,8 @@ FrameObservations ImageFrontEnd::process(const StereoFrame& frame) {
   stage = Clock::now();
   std::unordered_set<int> matchedSomewhere;
   for (std::size_t k = 0; k < matchers_.size(); ++k) {
-    const KltImage secondary = makeKltImage(frame.images[k + 1], pyramid_);
+    // KLT compares raw intensities: the cameras' exposures must agree first.
+    const KltImage secondary = makeKltImage(withBrightnessOf(frame.images[k + 1], frame.images[0]), pyramid_);
     for (const StereoMatch& m : matchers_[k].match(base, secondary, ids, raw, pixels)) {
       observations.observations.push_back({m.track, static_cast<int>(k + 1), m.pixel});
       matchedSomewhere.insert(m.track);

@@ -51,4 +51,15 @@ std::vector<bool> trackKlt(const KltImage& from, const KltImage& to, const std::
   return found;
 }
 
+cv::Mat withBrightnessOf(const cv::Mat& image, const cv::Mat& reference) {
+  cv::Scalar mean, spread, referenceMean, referenceSpread;
+  cv::meanStdDev(image, mean, spread);
+  cv::meanStdDev(reference, referenceMean, referenceSpread);
+  if (!(spread[0] > 0.0)) return image;
+  const double gain = referenceSpread[0] / spread[0];
+  cv::Mat result;
+  image.convertTo(result, CV_8U, gain, referenceMean[0] - gain * mean[0]);
+  return result;
+}
+
 }  // namespace lrsvo

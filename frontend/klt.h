@@ -33,4 +33,8 @@ KltImage makeKltImage(const cv::Mat& image, const KltOptions& options);
 std::vector<bool> trackKlt(const KltImage& from, const KltImage& to, const std::vector<cv::Point2f>& points,
                            std::vector<cv::Point2f>& positions, const KltOptions& options);
 
+// `image` with a gain and offset that give it the mean and standard deviation
+// of `reference`'s intensities (two cameras of a rig expose differently).
+cv::Mat withBrightnessOf(const cv::Mat& image, const cv::Mat& reference);
+
 }  // namespace lrsvo

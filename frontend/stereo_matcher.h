@@ -21,8 +21,9 @@ struct StereoMatcherOptions {
   double bandWidth_px = 8.0;  // accepted distance either side of the calibrated epipolar line
   double minDepth_m = 20.0;   // nearest depth searched (the largest disparity)
   double maxDepth_m = std::numeric_limits<double>::infinity();
-  // KLT refinement; its forward-backward check is the left-right consistency check.
-  KltOptions klt;
+  // KLT refinement; its forward-backward check is the left-right consistency
+  // check, looser than in time (two cameras' images differ more than two frames').
+  KltOptions klt{.forwardBackward_px = 1.0};
   int searchLevel = 1;          // pyramid level of the coarse correlation search along the band
   int searchPatch_px = 9;       // side of the correlation patch at that level
   double minCorrelation = 0.6;  // zero-mean normalised cross-correlation of the coarse match

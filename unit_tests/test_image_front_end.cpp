@@ -489,14 +489,13 @@ TEST(ImageFrontEnd, TracksTheEurocMicroSequence) {
   options.stereo.minDepth_m = 0.5;  // indoors: disparities up to 100 px
   ImageFrontEnd frontEnd(source.rig(), source.distortion(), options);
   std::map<int, Eigen::Vector2d> firstSeen, lastSeen;
-  int frames = 0;
+  int frames = 0, mostMatched = 0;
   FrontEndTimings mean;
   while (const std::optional<StereoFrame> frame = source.next()) {
     const FrameObservations observations = frontEnd.process(*frame);
     const FrontEndTimings& t = frontEnd.lastTimings();
     EXPECT_GE(t.tracked + t.added, 100) << "frame " << frame->index;
-    // Far fewer than the brief's "most": see the stereo matcher's notes.
-    EXPECT_GE(t.stereoMatched, 60) << "frame " << frame->index;
+    if (2 * t.stereoMatched >= t.tracked + t.added) ++mostMatched;
     for (const Observation& o : observations.observations) {
       if (o.camera != 0) continue;
       firstSeen.emplace(o.track, o.pixel);
@@ -508,6 +507,7 @@ TEST(ImageFrontEnd, TracksTheEurocMicroSequence) {
     ++frames;
   }
   EXPECT_EQ(frames, 95);
+  EXPECT_GE(mostMatched, 90) << "frames where most tracks have a stereo match";
   std::printf("EuRoC micro, a frame: %.0f tracks, %.0f stereo matched, %.2f ms\n", mean.tracked / 95.0,
               mean.stereoMatched / 95.0, mean.total_ms / 95.0);
   std::vector<double> motion;
