@@ -4,8 +4,10 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <utility>
 
 #include "graph/error.h"
+#include "sim/flight_truth.h"
 #include "sim/footprint.h"
 #include "sim/scene_point_grid.h"
 #include "sim/seed_mix.h"
@@ -56,24 +58,10 @@ class Simulator {
 
  private:
   void simulateTruth(SimulatedSequence& sequence) {
-    const std::vector<FlightPose> flight = simulateFlight(o_.flight);
-    std::vector<double> times;
-    for (const FlightPose& pose : flight) {
-      const Eigen::Vector3d centre = pose.cameraFromWorld.inverse().translation();
-      const double ground = terrain_.height(centre.x(), centre.y());
-      check(centre.z() > ground,
-            "at t = " + std::to_string(pose.time_s) + " s the aircraft (z = " + std::to_string(centre.z()) +
-                " m) is not above the terrain (z = " + std::to_string(ground) + " m); raise flight.altitude_m");
-      times.push_back(pose.time_s);
-      sequence.trueCameraFromWorld.push_back(pose.cameraFromWorld);
-      sequence.frames.push_back({pose.time_s, {}});
-    }
-    std::vector<std::vector<Vector6>> perCamera;
-    for (int k = 1; k <= o_.rig.secondaryCount(); ++k)
-      perCamera.push_back(simulateDeformation(o_.rig.extrinsics[k - 1], times, o_.deformation, k));
-    sequence.trueExtrinsics.resize(times.size());
-    for (std::size_t i = 0; i < times.size(); ++i)
-      for (const std::vector<Vector6>& camera : perCamera) sequence.trueExtrinsics[i].push_back(camera[i]);
+    FlightTruth truth = simulateFlightTruth(o_.flight, terrain_, o_.rig, o_.deformation);
+    for (double time : truth.times_s) sequence.frames.push_back({time, {}});
+    sequence.trueCameraFromWorld = std::move(truth.cameraFromWorld);
+    sequence.trueExtrinsics = std::move(truth.extrinsics);
   }
 
   // Every frame's search box: the ground footprints of all its cameras on the

@@ -135,6 +135,24 @@ double Terrain::height(double x, double y, CellCache& cache) const {
   return z;
 }
 
+Terrain::Obstacles Terrain::obstaclesIn(const Eigen::AlignedBox2d& box) const {
+  check(box.min().allFinite() && box.max().allFinite() && box.max().cwiseAbs().maxCoeff() <= kWorldLimit_m &&
+            box.min().cwiseAbs().maxCoeff() <= kWorldLimit_m,
+        "obstaclesIn needs a finite box within the world's +-1e9 m");
+  // An obstacle reaches at most one cell beyond its own.
+  const auto first = (box.min() / cellSize_m_).array().floor().cast<std::int64_t>() - 1;
+  const auto last = (box.max() / cellSize_m_).array().floor().cast<std::int64_t>() + 1;
+  Obstacles obstacles;
+  for (std::int64_t ix = first.x(); ix <= last.x(); ++ix) {
+    for (std::int64_t iy = first.y(); iy <= last.y(); ++iy) {
+      const Cell c = makeCell(ix, iy);
+      obstacles.trees.insert(obstacles.trees.end(), c.trees.begin(), c.trees.end());
+      obstacles.buildings.insert(obstacles.buildings.end(), c.buildings.begin(), c.buildings.end());
+    }
+  }
+  return obstacles;
+}
+
 double Terrain::height(double x, double y) const {
   CellCache cache;
   return height(x, y, cache);

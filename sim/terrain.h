@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace lrsvo {
 
@@ -43,12 +43,9 @@ class Terrain {
   std::vector<Eigen::Vector3d> samplePoints(const Eigen::Vector2d& min, const Eigen::Vector2d& max, int count,
                                             std::uint64_t seed) const;
 
- private:
-  struct Wave {
-    Eigen::Vector2d wavenumber;  // rad/m along the wave's direction
-    double amplitude;
-    double phase;
-  };
+  // The obstacles on the ground: an ellipsoid crown (upper half, semi-axes
+  // radius, radius, height, centred on the ground at its trunk) and a box
+  // with a flat roof, reaching down into the ground.
   struct Tree {
     Eigen::Vector2d centre;
     double radius;
@@ -60,6 +57,20 @@ class Terrain {
     Eigen::Vector2d halfSize;  // along its own axes
     double cosHeading, sinHeading;
     double roof;  // world z of the flat roof
+  };
+  struct Obstacles {
+    std::vector<Tree> trees;
+    std::vector<Building> buildings;
+  };
+  // Every tree and building whose footprint may reach into the box (x, y):
+  // those that shape height() there, and perhaps a few more nearby.
+  Obstacles obstaclesIn(const Eigen::AlignedBox2d& box) const;
+
+ private:
+  struct Wave {
+    Eigen::Vector2d wavenumber;  // rad/m along the wave's direction
+    double amplitude;
+    double phase;
   };
   struct Cell {
     std::vector<Tree> trees;

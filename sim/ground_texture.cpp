@@ -1,0 +1,231 @@
+#include "sim/ground_texture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "graph/error.h"
+#include "sim/seed_mix.h"
+
+namespace lrsvo {
+namespace {
+
+// Salts of the independent noise layers.
+enum Layer : std::uint32_t { kGrain = 1, kBroad, kRowBreaks, kTrack, kHedge, kCrown, kRoof, kCellLayout, kEdgeKind };
+
+constexpr double kBaseTexel_m = 0.01;  // the finest cached ground texels: half the footprint of a pixel at 30 m
+constexpr double kTrackHalfWidth_m = 1.8, kRutOffset_m = 0.8, kRutHalfWidth_m = 0.2;
+constexpr double kHedgeHalfWidth_m = 1.2, kVergeHalfWidth_m = 0.35, kRoofRim_m = 0.25;
+
+std::uint64_t mix(std::uint64_t h) {
+  h ^= h >> 31;
+  h *= 0xbf58476d1ce4e5b9ULL;
+  h ^= h >> 29;
+  h *= 0x94d049bb133111ebULL;
+  return h ^ (h >> 32);
+}
+
+// A hash of a lattice point and a salt, uniform in [0, 1).
+double hash01(std::int64_t x, std::int64_t y, std::uint32_t salt) {
+  const std::uint64_t h = mix(static_cast<std::uint64_t>(x) * 0x9e3779b97f4a7c15ULL ^
+                              mix(static_cast<std::uint64_t>(y) + (static_cast<std::uint64_t>(salt) << 40)));
+  return static_cast<double>(h >> 11) * 0x1.0p-53;
+}
+
+// Smooth value noise of unit wavelength in [-0.5, 0.5).
+double valueNoise(double x, double y, std::uint32_t salt) {
+  const double fx = std::floor(x), fy = std::floor(y);
+  const auto ix = static_cast<std::int64_t>(fx), iy = static_cast<std::int64_t>(fy);
+  const double tx = x - fx, ty = y - fy;
+  const double sx = tx * tx * (3.0 - 2.0 * tx), sy = ty * ty * (3.0 - 2.0 * ty);
+  const double a = hash01(ix, iy, salt), b = hash01(ix + 1, iy, salt);
+  const double c = hash01(ix, iy + 1, salt), d = hash01(ix + 1, iy + 1, salt);
+  return a + (b - a) * sx + (c - a) * sy + (a - b - c + d) * sx * sy - 0.5;
+}
+
+// How much of a pattern of wavelength `lambda` survives averaging over a
+// pixel footprint: none at or below 2 footprints (the sampling's Nyquist
+// limit, so nothing aliases), all from 4 footprints up.
+double keep(double lambda, double footprint) { return std::clamp(lambda / (2.0 * footprint) - 1.0, 0.0, 1.0); }
+
+// Octaves of value noise from lambdaMax down to lambdaMin (halving), each
+// `roughness` times the amplitude of the one above, those finer than the
+// footprint faded out; scaled so that its spread is that of one octave
+// (about +-0.5) however many octaves it sums.
+double fractal(double x, double y, double lambdaMin, double lambdaMax, double roughness, double footprint,
+               std::uint32_t salt) {
+  double sum = 0.0, amplitude = 1.0, total = 0.0;
+  std::uint32_t octave = 0;
+  for (double lambda = lambdaMax; lambda >= lambdaMin; lambda *= 0.5, amplitude *= roughness, ++octave) {
+    total += amplitude * amplitude;
+    const double weight = keep(lambda, footprint);
+    if (weight > 0.0) sum += weight * amplitude * valueNoise(x / lambda, y / lambda, salt * 131u + octave);
+  }
+  return sum / std::sqrt(total);
+}
+
+// The part of a pixel footprint wide box filter inside a band of half-width
+// `halfWidth` at distance d from its centre line: a sharp edge, anti-aliased.
+double band(double d, double halfWidth, double footprint) {
+  return std::clamp((halfWidth - std::abs(d)) / footprint + 0.5, 0.0, 1.0);
+}
+
+// A triangle wave of the given period, in [0, 1], faded to its mean 0.5 when finer than the footprint.
+double rows(double s, double period, double footprint) {
+  const double phase = s / period - std::floor(s / period);
+  return 0.5 + keep(period, footprint) * (std::abs(2.0 * phase - 1.0) - 0.5);
+}
+
+double lerp(double a, double b, double t) { return a + (b - a) * t; }
+
+}  // namespace
+
+GroundTexture::GroundTexture(const GroundTextureOptions& options)
+    : options_(options),
+      groundTexels_([this](double x, double y, double footprint) { return ground(x, y, footprint); }, kBaseTexel_m) {
+  const auto& o = options_;
+  if (!(std::isfinite(o.fieldSize_m) && o.fieldSize_m > 0.0))
+    throw Error("ground texture: fieldSize_m must be finite and > 0");
+  if (!(o.trackProbability >= 0.0 && o.hedgeProbability >= 0.0 && o.trackProbability + o.hedgeProbability <= 1.0))
+    throw Error("ground texture: trackProbability and hedgeProbability must be >= 0 and sum to at most 1");
+  if (!(std::isfinite(o.grainContrast) && o.grainContrast >= 0.0))
+    throw Error("ground texture: grainContrast must be finite and >= 0");
+  salt_ = static_cast<std::uint32_t>(mixSeed(o.seed, 0x74657874));  // "text"
+  const double angle = 0.5 * std::numbers::pi * hash01(0, 0, salt_);
+  cosGrid_ = std::cos(angle);
+  sinGrid_ = std::sin(angle);
+}
+
+float GroundTexture::grey(const SurfaceHit& hit, double footprint_m) const {
+  if (hit.tree) return tree(hit, footprint_m);
+  if (hit.building) return building(hit, footprint_m);
+  return groundTexels_.sample(hit.point.x(), hit.point.y(), footprint_m);
+}
+
+void GroundTexture::prepare(const std::vector<SurfaceHit>& hits, const std::vector<float>& footprints_m,
+                            int threads) const {
+  std::vector<Eigen::Vector2d> points;
+  std::vector<float> footprints;
+  points.reserve(hits.size());
+  footprints.reserve(hits.size());
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    if (hits[i].tree || hits[i].building) continue;
+    points.push_back(hits[i].point.head<2>());
+    footprints.push_back(footprints_m[i]);
+  }
+  groundTexels_.require(points, footprints, threads);
+}
+
+double GroundTexture::grain(double x, double y, double footprint_m) const {
+  return 1.0 + options_.grainContrast * 2.0 * fractal(x, y, 0.02, 1.28, 1.0, footprint_m, salt_ + kGrain);
+}
+
+float GroundTexture::field(double u, double v, std::int64_t i, std::int64_t j, int half, double footprint_m) const {
+  const std::uint32_t salt = salt_ + kCellLayout;
+  const double kind = hash01(2 * i + half, j, salt + 1);
+  const double shade = hash01(2 * i + half, j, salt + 2);
+  const bool alongU = hash01(2 * i + half, j, salt + 3) < 0.5;
+  const double spacing = hash01(2 * i + half, j, salt + 4);
+  double grey, period, contrast;
+  if (kind < 0.4) {  // ploughed soil: dark, fine furrows
+    grey = lerp(70.0, 120.0, shade), period = lerp(0.3, 0.8, spacing), contrast = 0.3;
+  } else if (kind < 0.7) {  // a crop in rows
+    grey = lerp(100.0, 160.0, shade), period = lerp(0.5, 1.5, spacing), contrast = 0.25;
+  } else {  // pasture: no rows, patchy
+    grey = lerp(110.0, 170.0, shade), period = 0.0, contrast = 0.0;
+  }
+  const double across = alongU ? v : u, along = alongU ? u : v;
+  if (period > 0.0) {
+    // Rows broken up along their length (plants, clods), so row texture has corners too.
+    const double breaks = 0.5 + fractal(along, across / period, 0.1, 0.8, 0.8, footprint_m, salt_ + kRowBreaks);
+    grey *= 1.0 + contrast * (2.0 * rows(across, period, footprint_m) - 1.0) * (0.4 + 1.2 * breaks);
+  } else {
+    grey *= 1.0 + 0.5 * fractal(u, v, 1.0, 16.0, 0.7, footprint_m, salt_ + kBroad + 7);
+  }
+  return static_cast<float>(grey);
+}
+
+float GroundTexture::ground(double x, double y, double footprint_m) const {
+  const double size = options_.fieldSize_m;
+  const double u = cosGrid_ * x + sinGrid_ * y, v = -sinGrid_ * x + cosGrid_ * y;
+  const double fi = std::floor(u / size), fj = std::floor(v / size);
+  const auto i = static_cast<std::int64_t>(fi), j = static_cast<std::int64_t>(fj);
+  const double cu = u - fi * size, cv = v - fj * size;  // within the cell
+  const std::uint32_t layout = salt_ + kCellLayout;
+  // Each cell is split in two across u or v at 30-70 %.
+  const bool splitU = hash01(i, j, layout) < 0.5;
+  const double splitAt = size * lerp(0.3, 0.7, hash01(i, j, layout + 5));
+  const double splitDistance = (splitU ? cu : cv) - splitAt;
+  const int half = splitDistance < 0.0 ? 0 : 1;
+  double grey = field(u, v, i, j, half, footprint_m);
+  grey *= 1.0 + 0.3 * fractal(x, y, 4.0, 64.0, 0.7, footprint_m, salt_ + kBroad);
+
+  // The nearest cell edge in u and in v, each a track, hedge or verge by its own hash.
+  auto edgeStrip = [&](double distance, std::int64_t key1, std::int64_t key2, std::uint32_t axis) {
+    const double pick = hash01(key1, key2, salt_ + kEdgeKind + axis);
+    const double along = axis == 0 ? v : u;
+    if (pick < options_.trackProbability) {
+      const double inside = band(distance, kTrackHalfWidth_m, footprint_m);
+      if (inside <= 0.0) return;
+      const double ruts = band(std::abs(distance) - kRutOffset_m, kRutHalfWidth_m, footprint_m);
+      const double gravel = 1.0 + 0.6 * fractal(along, distance, 0.02, 0.64, 0.9, footprint_m, salt_ + kTrack);
+      const double track = lerp(lerp(175.0, 205.0, hash01(key1, key2, salt_ + kTrack)), 120.0, ruts) * gravel;
+      grey = lerp(grey, track, inside);
+    } else if (pick < options_.trackProbability + options_.hedgeProbability) {
+      // Hedges are ragged: their half-width wanders along them.
+      const double ragged = kHedgeHalfWidth_m * (1.0 + 0.6 * fractal(along, 0.0, 0.5, 4.0, 0.8, 0.0, salt_ + kHedge));
+      const double inside = band(distance, ragged, footprint_m);
+      if (inside <= 0.0) return;
+      const double leaves = 1.0 + 1.2 * fractal(along, distance, 0.04, 1.28, 0.85, footprint_m, salt_ + kHedge + 1);
+      grey = lerp(grey, 55.0 * leaves, inside);
+    } else {
+      grey = lerp(grey, 140.0, band(distance, kVergeHalfWidth_m, footprint_m));
+    }
+  };
+  if (cu < 0.5 * size)
+    edgeStrip(cu, i, j, 0);
+  else
+    edgeStrip(cu - size, i + 1, j, 0);
+  if (cv < 0.5 * size)
+    edgeStrip(cv, i, j, 1);
+  else
+    edgeStrip(cv - size, i, j + 1, 1);
+  // The split line: a hedge or a verge.
+  if (hash01(i, j, layout + 6) < options_.hedgeProbability) {
+    const double inside = band(splitDistance, kHedgeHalfWidth_m, footprint_m);
+    if (inside > 0.0)
+      grey = lerp(grey, 55.0 * (1.0 + 1.2 * fractal(u, v, 0.04, 1.28, 0.85, footprint_m, salt_ + kHedge + 2)), inside);
+  } else {
+    grey = lerp(grey, 140.0, band(splitDistance, kVergeHalfWidth_m, footprint_m));
+  }
+  return static_cast<float>(std::clamp(grey * grain(x, y, footprint_m), 0.0, 255.0));
+}
+
+float GroundTexture::tree(const SurfaceHit& hit, double footprint_m) const {
+  const Terrain::Tree& t = *hit.tree;
+  const double r2 = std::min(1.0, (hit.point.head<2>() - t.centre).squaredNorm() / (t.radius * t.radius));
+  const double shading = 0.55 + 0.45 * std::sqrt(1.0 - r2);
+  const double x = hit.point.x(), y = hit.point.y();
+  const double clumps = 1.0 + 2.0 * fractal(x, y, 0.02, 2.56, 1.0, footprint_m, salt_ + kCrown);
+  const double tone =
+      lerp(45.0, 80.0, hash01(std::llround(t.centre.x() * 10.0), std::llround(t.centre.y() * 10.0), salt_ + kCrown));
+  return static_cast<float>(std::clamp(tone * shading * clumps, 0.0, 255.0));
+}
+
+float GroundTexture::building(const SurfaceHit& hit, double footprint_m) const {
+  const Terrain::Building& b = *hit.building;
+  if (hit.point.z() < b.roof - 1e-6) return 90.0f;  // a wall
+  const Eigen::Vector2d d = hit.point.head<2>() - b.centre;
+  const double along = b.cosHeading * d.x() + b.sinHeading * d.y();
+  const double across = -b.sinHeading * d.x() + b.cosHeading * d.y();
+  const double tone =
+      lerp(160.0, 215.0, hash01(std::llround(b.centre.x() * 10.0), std::llround(b.centre.y() * 10.0), salt_ + kRoof));
+  const double toEdge = std::min(b.halfSize.x() - std::abs(along), b.halfSize.y() - std::abs(across));
+  const double rim = band(toEdge, kRoofRim_m, footprint_m);
+  const double corrugation = 1.0 + 0.12 * (2.0 * rows(along, 0.4, footprint_m) - 1.0);
+  const double weathering = 1.0 + 0.3 * fractal(along, across, 0.05, 2.0, 0.8, footprint_m, salt_ + kRoof + 1);
+  return static_cast<float>(std::clamp(lerp(tone * corrugation * weathering, 80.0, rim), 0.0, 255.0));
+}
+
+}  // namespace lrsvo

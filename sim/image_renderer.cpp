@@ -1,0 +1,106 @@
+#include "sim/image_renderer.h"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+#include "graph/error.h"
+#include "graph/parallel_for.h"
+#include "sim/seed_mix.h"
+#include "sim/surface_view.h"
+
+namespace lrsvo {
+namespace {
+
+constexpr std::uint64_t kGainStream = 0x6761696e, kNoiseStream = 0x6e6f6973;  // "gain", "nois"
+constexpr int kGainSinusoids = 3;
+
+}  // namespace
+
+ImageRenderer::ImageRenderer(const Terrain& terrain, const SurfaceTexture& texture, const RenderOptions& options,
+                             std::uint64_t seed)
+    : terrain_(terrain), texture_(texture), options_(options), seed_(seed) {
+  const RenderOptions& o = options_;
+  if (!(o.noiseSigma_grey >= 0.0 && o.blurSigma_px >= 0.0 && o.exposureDrift >= 0.0 && o.vignetting >= 0.0 &&
+        o.vignetting < 1.0 && std::isfinite(o.noiseSigma_grey) && std::isfinite(o.blurSigma_px) &&
+        o.exposureDrift < 1.0))
+    throw Error(
+        "image renderer: noiseSigma_grey and blurSigma_px must be finite and >= 0, exposureDrift and "
+        "vignetting in [0, 1)");
+  if (!(o.exposurePeriod_s > 0.0 && std::isfinite(o.exposurePeriod_s)) || o.threads < 1)
+    throw Error("image renderer: exposurePeriod_s must be finite and > 0 and threads >= 1");
+}
+
+double ImageRenderer::gain(double time_s, int cameraIndex) const {
+  if (options_.exposureDrift == 0.0) return 1.0;
+  SplitMix64 rng(mixSeed(seed_, kGainStream, static_cast<std::uint64_t>(cameraIndex)));
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double drift = 0.0;
+  for (int i = 0; i < kGainSinusoids; ++i) {
+    const double period = options_.exposurePeriod_s * std::exp2(2.0 * unit(rng) - 1.0);
+    const double phase = 2.0 * std::numbers::pi * unit(rng);
+    drift += std::sin(2.0 * std::numbers::pi * time_s / period + phase) / kGainSinusoids;
+  }
+  return 1.0 + options_.exposureDrift * drift;
+}
+
+cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d& cameraFromWorld) const {
+  const SurfaceView view(terrain_, camera, cameraFromWorld);
+  const int width = camera.width;
+  std::vector<SurfaceHit> hits(static_cast<std::size_t>(width) * camera.height);
+  std::vector<float> footprints(hits.size());
+  parallelFor(0, camera.height, options_.threads, [&](int v) {
+    for (int u = 0; u < width; ++u) {
+      const std::size_t i = static_cast<std::size_t>(v) * width + u;
+      hits[i] = view.hit(u, v);
+      footprints[i] = static_cast<float>(view.footprint(hits[i]));
+    }
+  });
+  texture_.prepare(hits, footprints, options_.threads);
+  cv::Mat scene(camera.height, width, CV_32FC1);
+  parallelFor(0, camera.height, options_.threads, [&](int v) {
+    float* row = scene.ptr<float>(v);
+    for (int u = 0; u < width; ++u) {
+      const std::size_t i = static_cast<std::size_t>(v) * width + u;
+      row[u] = texture_.grey(hits[i], footprints[i]);
+    }
+  });
+  return scene;
+}
+
+cv::Mat ImageRenderer::render(const Camera& camera, const Eigen::Isometry3d& cameraFromWorld, double time_s, int frame,
+                              int cameraIndex) const {
+  cv::Mat image = renderScene(camera, cameraFromWorld);
+  image *= gain(time_s, cameraIndex);
+  if (options_.vignetting > 0.0) {
+    // Relative illumination cos^4 of the off-axis angle, scaled to the requested corner loss.
+    const PinholeIntrinsics& k = camera.intrinsics;
+    const double cornerSquared = std::pow(std::max(k.cx, camera.width - k.cx) / k.fx, 2) +
+                                 std::pow(std::max(k.cy, camera.height - k.cy) / k.fy, 2);
+    const double cornerCos4 = 1.0 / std::pow(1.0 + cornerSquared, 2);
+    for (int v = 0; v < image.rows; ++v) {
+      float* row = image.ptr<float>(v);
+      for (int u = 0; u < image.cols; ++u) {
+        const double r2 = std::pow((u - k.cx) / k.fx, 2) + std::pow((v - k.cy) / k.fy, 2);
+        const double cos4 = 1.0 / std::pow(1.0 + r2, 2);
+        row[u] *= static_cast<float>(1.0 - options_.vignetting * (1.0 - cos4) / (1.0 - cornerCos4));
+      }
+    }
+  }
+  if (options_.blurSigma_px > 0.0) cv::GaussianBlur(image, image, cv::Size(0, 0), options_.blurSigma_px);
+  if (options_.noiseSigma_grey > 0.0) {
+    cv::Mat noise(image.size(), CV_32FC1);
+    cv::RNG rng(
+        mixSeed(seed_ ^ kNoiseStream, static_cast<std::uint64_t>(frame), static_cast<std::uint64_t>(cameraIndex)));
+    rng.fill(noise, cv::RNG::NORMAL, 0.0, options_.noiseSigma_grey);
+    image += noise;
+  }
+  cv::Mat out;
+  image.convertTo(out, CV_8UC1);  // rounds and saturates to 0..255
+  return out;
+}
+
+}  // namespace lrsvo

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <cstdint>
+
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+
+#include "frontend/rig.h"
+#include "sim/surface_texture.h"
+#include "sim/terrain.h"
+
+namespace lrsvo {
+
+// The sensor: what turns the scene's grey levels into an 8-bit image.
+struct RenderOptions {
+  double noiseSigma_grey = 2.0;    // Gaussian read noise per pixel, grey levels
+  double blurSigma_px = 0.5;       // Gaussian optical blur, pixels (0: none)
+  double exposureDrift = 0.08;     // relative amplitude of the slow gain drift of each camera (0: constant gain)
+  double exposurePeriod_s = 20.0;  // typical period of that drift (its sinusoids span half to twice this)
+  double vignetting = 0.0;         // relative darkening at the image corners (cos^4-like fall-off; 0: none)
+  int threads = 2;                 // rows are rendered in parallel
+};
+
+// Renders what a pinhole camera (no distortion) sees of a terrain: each
+// pixel's ray meets the surface (sim/surface_view.h) and takes the texture's
+// grey there, averaged over the pixel's footprint on the surface so that
+// images do not shimmer as the camera moves. Then the gain of that camera at
+// that time, vignetting, blur and noise (seeded by seed, frame and camera:
+// the same call gives the same image).
+class ImageRenderer {
+ public:
+  // Throws lrsvo::Error on negative sigmas, drift or vignetting, a
+  // non-positive period or thread count.
+  ImageRenderer(const Terrain& terrain, const SurfaceTexture& texture, const RenderOptions& options,
+                std::uint64_t seed);
+
+  // Camera `cameraIndex` of the rig at pose cameraFromWorld in frame `frame`
+  // at time_s: a CV_8UC1 image of camera.width x camera.height.
+  cv::Mat render(const Camera& camera, const Eigen::Isometry3d& cameraFromWorld, double time_s, int frame,
+                 int cameraIndex) const;
+  // The scene alone (before gain, vignetting, blur and noise): CV_32FC1 grey levels.
+  cv::Mat renderScene(const Camera& camera, const Eigen::Isometry3d& cameraFromWorld) const;
+  // The relative gain of camera `cameraIndex` at time_s, 1 +- exposureDrift.
+  double gain(double time_s, int cameraIndex) const;
+
+ private:
+  const Terrain& terrain_;
+  const SurfaceTexture& texture_;
+  RenderOptions options_;
+  std::uint64_t seed_;
+};
+
+}  // namespace lrsvo

@@ -1,0 +1,368 @@
+#include "sim/scenario.h"
+
+#include <climits>
+#include <cmath>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <opencv2/core/persistence.hpp>
+
+#include "graph/error.h"
+
+namespace lrsvo {
+namespace {
+
+using Vector6 = VertexStereoExtrinsic::Vector6;
+using Kind = FlightLeg::Kind;
+
+constexpr int kPaperFrames = 9600;
+
+[[noreturn]] void fail(const std::string& where, const std::string& message) {
+  throw Error("scenario " + where + ": " + message);
+}
+
+// Reads the keys of one YAML map, each optional; finish() rejects any key
+// that no accessor asked for.
+class MapReader {
+ public:
+  MapReader(const cv::FileNode& node, std::string where) : node_(node), where_(std::move(where)) {
+    if (!node_.empty() && !node_.isMap()) fail(where_, "must be a map of key: value");
+  }
+  cv::FileNode get(const std::string& key) {
+    known_.insert(key);
+    return node_.empty() ? cv::FileNode() : node_[key];
+  }
+  void real(const std::string& key, double& value) {
+    const cv::FileNode n = get(key);
+    if (n.empty()) return;
+    if (!n.isReal() && !n.isInt()) fail(where_ + "." + key, "must be a number");
+    value = static_cast<double>(n);
+  }
+  void integer(const std::string& key, int& value) {
+    const cv::FileNode n = get(key);
+    if (n.empty()) return;
+    if (!n.isInt()) fail(where_ + "." + key, "must be an integer");
+    value = static_cast<int>(n);
+  }
+  void seed(const std::string& key, std::uint64_t& value) {
+    const cv::FileNode n = get(key);
+    if (n.empty()) return;
+    if (n.isInt() && static_cast<int>(n) >= 0) {
+      value = static_cast<std::uint64_t>(static_cast<int>(n));
+    } else if (n.isString()) {
+      const std::string text = static_cast<std::string>(n);
+      if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+        fail(where_ + "." + key, "must be a non-negative integer, got '" + text + "'");
+      value = std::stoull(text);
+    } else {
+      fail(where_ + "." + key, "must be a non-negative integer (as a number up to 2^31 - 1, or a string of digits)");
+    }
+  }
+  void vector6(const std::string& key, Vector6& value) {
+    const cv::FileNode n = get(key);
+    if (n.empty()) return;
+    if (!n.isSeq() || n.size() != 6) fail(where_ + "." + key, "must be a list of 6 numbers");
+    for (int i = 0; i < 6; ++i) {
+      if (!n[i].isReal() && !n[i].isInt()) fail(where_ + "." + key, "must be a list of 6 numbers");
+      value[i] = static_cast<double>(n[i]);
+    }
+  }
+  void finish() const {
+    if (node_.empty()) return;
+    for (const std::string& key : node_.keys())
+      if (!known_.count(key)) fail(where_, "unknown key '" + key + "'");
+  }
+
+ private:
+  cv::FileNode node_;
+  std::string where_;
+  std::set<std::string> known_;
+};
+
+const char* kindName(Kind kind) {
+  switch (kind) {
+    case Kind::Straight: return "straight";
+    case Kind::Turn: return "turn";
+    case Kind::Climb: return "climb";
+  }
+  return "straight";
+}
+
+Kind kindFromName(const std::string& name, const std::string& where) {
+  if (name == "straight") return Kind::Straight;
+  if (name == "turn") return Kind::Turn;
+  if (name == "climb") return Kind::Climb;
+  fail(where, "kind must be straight, turn or climb, got '" + name + "'");
+}
+
+void readFlight(const cv::FileNode& node, FlightOptions& f) {
+  MapReader r(node, "flight");
+  r.real("altitude_m", f.altitude_m);
+  r.real("speed_m_s", f.speed_m_s);
+  r.real("frameRate_hz", f.frameRate_hz);
+  r.integer("frameStep", f.frameStep);
+  r.real("attitudeNoise_rad", f.attitudeNoise_rad);
+  r.real("transition_s", f.transition_s);
+  r.seed("seed", f.seed);
+  const cv::FileNode legs = r.get("legs");
+  if (!legs.empty()) {
+    if (!legs.isSeq()) fail("flight.legs", "must be a list of legs");
+    f.legs.clear();
+    for (std::size_t i = 0; i < legs.size(); ++i) {
+      const std::string where = "flight.legs[" + std::to_string(i) + "]";
+      MapReader leg(legs[static_cast<int>(i)], where);
+      FlightLeg l;
+      const cv::FileNode kind = leg.get("kind");
+      if (kind.empty() || !kind.isString()) fail(where, "needs kind: straight, turn or climb");
+      l.kind = kindFromName(static_cast<std::string>(kind), where);
+      leg.real("length_m", l.length_m);
+      leg.real("turnRate_rad_s", l.turnRate_rad_s);
+      leg.real("climbRate_m_s", l.climbRate_m_s);
+      leg.finish();
+      f.legs.push_back(l);
+    }
+  }
+  r.finish();
+}
+
+void readTerrain(const cv::FileNode& node, TerrainOptions& t) {
+  MapReader r(node, "terrain");
+  r.real("relief_m", t.relief_m);
+  r.real("hillScale_m", t.hillScale_m);
+  r.real("treeDensity_per_km2", t.treeDensity_per_km2);
+  r.real("treeHeight_m", t.treeHeight_m);
+  r.real("buildingDensity_per_km2", t.buildingDensity_per_km2);
+  r.real("buildingHeight_m", t.buildingHeight_m);
+  r.real("buildingSize_m", t.buildingSize_m);
+  r.seed("seed", t.seed);
+  r.finish();
+}
+
+void readRig(const cv::FileNode& node, Rig& rig) {
+  MapReader r(node, "rig");
+  const cv::FileNode cameras = r.get("cameras");
+  if (!cameras.empty()) {
+    if (!cameras.isSeq()) fail("rig.cameras", "must be a list of cameras");
+    rig.cameras.clear();
+    for (std::size_t i = 0; i < cameras.size(); ++i) {
+      MapReader c(cameras[static_cast<int>(i)], "rig.cameras[" + std::to_string(i) + "]");
+      Camera camera;
+      c.real("fx", camera.intrinsics.fx);
+      c.real("fy", camera.intrinsics.fy);
+      c.real("cx", camera.intrinsics.cx);
+      c.real("cy", camera.intrinsics.cy);
+      c.integer("width", camera.width);
+      c.integer("height", camera.height);
+      c.finish();
+      rig.cameras.push_back(camera);
+    }
+  }
+  const cv::FileNode extrinsics = r.get("extrinsics");
+  if (!extrinsics.empty()) {
+    if (!extrinsics.isSeq()) fail("rig.extrinsics", "must be a list of [x, y, z, roll, pitch, yaw]");
+    rig.extrinsics.assign(extrinsics.size(), Vector6::Zero());
+    for (std::size_t i = 0; i < extrinsics.size(); ++i) {
+      const cv::FileNode e = extrinsics[static_cast<int>(i)];
+      if (!e.isSeq() || e.size() != 6) fail("rig.extrinsics[" + std::to_string(i) + "]", "must be a list of 6 numbers");
+      for (int j = 0; j < 6; ++j) {
+        if (!e[j].isReal() && !e[j].isInt()) fail("rig.extrinsics[" + std::to_string(i) + "]", "must be numbers");
+        rig.extrinsics[i][j] = static_cast<double>(e[j]);
+      }
+    }
+  }
+  r.vector6("tolerance", rig.tolerance);
+  r.finish();
+}
+
+void readDeformation(const cv::FileNode& node, DeformationOptions& d) {
+  MapReader r(node, "deformation");
+  r.vector6("drift", d.drift);
+  r.real("driftPeriod_s", d.driftPeriod_s);
+  r.vector6("vibration", d.vibration);
+  r.vector6("offset", d.offset);
+  r.seed("seed", d.seed);
+  r.finish();
+}
+
+void readTexture(const cv::FileNode& node, GroundTextureOptions& t) {
+  MapReader r(node, "texture");
+  r.real("fieldSize_m", t.fieldSize_m);
+  r.real("trackProbability", t.trackProbability);
+  r.real("hedgeProbability", t.hedgeProbability);
+  r.real("grainContrast", t.grainContrast);
+  r.seed("seed", t.seed);
+  r.finish();
+}
+
+void readRender(const cv::FileNode& node, RenderOptions& o) {
+  MapReader r(node, "render");
+  r.real("noiseSigma_grey", o.noiseSigma_grey);
+  r.real("blurSigma_px", o.blurSigma_px);
+  r.real("exposureDrift", o.exposureDrift);
+  r.real("exposurePeriod_s", o.exposurePeriod_s);
+  r.real("vignetting", o.vignetting);
+  r.integer("threads", o.threads);
+  r.finish();
+}
+
+void writeSeed(cv::FileStorage& fs, const char* key, std::uint64_t seed) {
+  fs << key;
+  if (seed <= static_cast<std::uint64_t>(INT_MAX))
+    fs << static_cast<int>(seed);
+  else
+    fs << std::to_string(seed);
+}
+
+void writeVector6(cv::FileStorage& fs, const char* key, const Vector6& v) {
+  fs << key << "[:";
+  for (int i = 0; i < 6; ++i) fs << v[i];
+  fs << "]";
+}
+
+}  // namespace
+
+SimScenario demoScenario() {
+  SimScenario s;
+  s.name = "demo";
+  s.flight.altitude_m = 100.0;
+  s.flight.speed_m_s = 20.0;
+  s.flight.frameRate_hz = 30.0;
+  s.flight.attitudeNoise_rad = 0.005;
+  s.flight.legs = {{Kind::Straight, 250.0}, {Kind::Turn, 150.0, 0.06}, {Kind::Straight, 100.0}};
+  return s;
+}
+
+SimScenario paperScenario() {
+  SimScenario s;
+  s.name = "paper";
+  s.flight.altitude_m = 60.0;
+  s.flight.speed_m_s = 20.0;
+  s.flight.frameRate_hz = 30.0;
+  s.flight.attitudeNoise_rad = 0.01;
+  s.flight.legs = {{Kind::Straight, 500.0},        {Kind::Climb, 600.0, 0.0, 2.0},   // up to ~118 m
+                   {Kind::Straight, 400.0},        {Kind::Turn, 400.0, 0.1},         // ~109 deg left
+                   {Kind::Straight, 500.0},        {Kind::Climb, 600.0, 0.0, -2.8},  // down to ~37 m
+                   {Kind::Straight, 400.0},        {Kind::Turn, 500.0, -0.08},       // ~110 deg right
+                   {Kind::Climb, 600.0, 0.0, 1.5},                                   // up to ~80 m
+                   {Kind::Straight, 600.0},        {Kind::Turn, 400.0, 0.1},
+                   {Kind::Climb, 400.0, 0.0, 1.2}};  // up to ~103 m
+  // A last straight that ends the flight at exactly kPaperFrames frames.
+  double flown = 0.0;
+  for (const FlightLeg& leg : s.flight.legs) flown += leg.length_m;
+  const double total = (kPaperFrames - 1) / s.flight.frameRate_hz * s.flight.speed_m_s;
+  s.flight.legs.push_back({Kind::Straight, total - flown});
+  s.deformation.drift = (Vector6() << 8e-4, 8e-4, 8e-4, 8e-3, 8e-3, 8e-3).finished();
+  return s;
+}
+
+SimScenario readScenarioYaml(const std::string& path) {
+  cv::FileStorage fs;
+  try {
+    fs.open(path, cv::FileStorage::READ | cv::FileStorage::FORMAT_YAML);
+  } catch (const cv::Exception& e) {
+    fail("file " + path, std::string("is not valid YAML: ") + e.what());
+  }
+  if (!fs.isOpened()) fail("file " + path, "cannot be opened");
+  MapReader root(fs.root(), path);
+  SimScenario s = demoScenario();
+  const cv::FileNode base = root.get("base");
+  if (!base.empty()) {
+    const std::string name = base.isString() ? static_cast<std::string>(base) : "";
+    if (name == "paper")
+      s = paperScenario();
+    else if (name != "demo")
+      fail(path, "base must be demo or paper, got '" + name + "'");
+  }
+  const cv::FileNode name = root.get("name");
+  s.name = name.isString() ? static_cast<std::string>(name) : path;
+  root.seed("seed", s.seed);
+  readFlight(root.get("flight"), s.flight);
+  readTerrain(root.get("terrain"), s.terrain);
+  readRig(root.get("rig"), s.rig);
+  readDeformation(root.get("deformation"), s.deformation);
+  readTexture(root.get("texture"), s.texture);
+  readRender(root.get("render"), s.render);
+  root.finish();
+  s.rig.validate();
+  return s;
+}
+
+SimScenario loadScenario(const std::string& spec) {
+  if (spec == "demo") return demoScenario();
+  if (spec == "paper") return paperScenario();
+  if (spec.ends_with(".yaml") || spec.ends_with(".yml")) return readScenarioYaml(spec);
+  fail("'" + spec + "'", "unknown; expected demo, paper or a .yaml / .yml file");
+}
+
+void writeScenarioYaml(const SimScenario& s, const std::string& path) {
+  cv::FileStorage fs(path, cv::FileStorage::WRITE | cv::FileStorage::FORMAT_YAML);
+  if (!fs.isOpened()) fail("file " + path, "cannot be written");
+  fs << "name" << s.name;
+  writeSeed(fs, "seed", s.seed);
+  const FlightOptions& f = s.flight;
+  fs << "flight"
+     << "{"
+     << "altitude_m" << f.altitude_m << "speed_m_s" << f.speed_m_s << "frameRate_hz" << f.frameRate_hz << "frameStep"
+     << f.frameStep << "attitudeNoise_rad" << f.attitudeNoise_rad << "transition_s" << f.transition_s;
+  writeSeed(fs, "seed", f.seed);
+  fs << "legs"
+     << "[";
+  for (const FlightLeg& leg : f.legs)
+    fs << "{:"
+       << "kind" << kindName(leg.kind) << "length_m" << leg.length_m << "turnRate_rad_s" << leg.turnRate_rad_s
+       << "climbRate_m_s" << leg.climbRate_m_s << "}";
+  fs << "]"
+     << "}";
+  const TerrainOptions& t = s.terrain;
+  fs << "terrain"
+     << "{"
+     << "relief_m" << t.relief_m << "hillScale_m" << t.hillScale_m << "treeDensity_per_km2" << t.treeDensity_per_km2
+     << "treeHeight_m" << t.treeHeight_m << "buildingDensity_per_km2" << t.buildingDensity_per_km2 << "buildingHeight_m"
+     << t.buildingHeight_m << "buildingSize_m" << t.buildingSize_m;
+  writeSeed(fs, "seed", t.seed);
+  fs << "}";
+  fs << "rig"
+     << "{"
+     << "cameras"
+     << "[";
+  for (const Camera& c : s.rig.cameras)
+    fs << "{:"
+       << "fx" << c.intrinsics.fx << "fy" << c.intrinsics.fy << "cx" << c.intrinsics.cx << "cy" << c.intrinsics.cy
+       << "width" << c.width << "height" << c.height << "}";
+  fs << "]"
+     << "extrinsics"
+     << "[";
+  for (const Vector6& e : s.rig.extrinsics) {
+    fs << "[:";
+    for (int i = 0; i < 6; ++i) fs << e[i];
+    fs << "]";
+  }
+  fs << "]";
+  writeVector6(fs, "tolerance", s.rig.tolerance);
+  fs << "}";
+  const DeformationOptions& d = s.deformation;
+  fs << "deformation"
+     << "{";
+  writeVector6(fs, "drift", d.drift);
+  fs << "driftPeriod_s" << d.driftPeriod_s;
+  writeVector6(fs, "vibration", d.vibration);
+  writeVector6(fs, "offset", d.offset);
+  writeSeed(fs, "seed", d.seed);
+  fs << "}";
+  const GroundTextureOptions& x = s.texture;
+  fs << "texture"
+     << "{"
+     << "fieldSize_m" << x.fieldSize_m << "trackProbability" << x.trackProbability << "hedgeProbability"
+     << x.hedgeProbability << "grainContrast" << x.grainContrast;
+  writeSeed(fs, "seed", x.seed);
+  fs << "}";
+  const RenderOptions& r = s.render;
+  fs << "render"
+     << "{"
+     << "noiseSigma_grey" << r.noiseSigma_grey << "blurSigma_px" << r.blurSigma_px << "exposureDrift" << r.exposureDrift
+     << "exposurePeriod_s" << r.exposurePeriod_s << "vignetting" << r.vignetting << "threads" << r.threads << "}";
+}
+
+}  // namespace lrsvo

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "frontend/rig.h"
+#include "sim/flight.h"
+#include "sim/ground_texture.h"
+#include "sim/image_renderer.h"
+#include "sim/rig_deformation.h"
+#include "sim/terrain.h"
+
+namespace lrsvo {
+
+// Everything that defines a rendered synthetic flight. Each part keeps its
+// own seed (terrain.seed: the world's shape, texture.seed: its look,
+// flight.seed: the attitude wobble, deformation.seed: the rig's motion);
+// `seed` drives the sensor (image noise and exposure drift), so runs over
+// `seed` fly the same flight over the same world with new sensor noise.
+struct SimScenario {
+  std::string name = "demo";
+  FlightOptions flight;
+  TerrainOptions terrain;
+  Rig rig = paperRig();  // the calibration, as told to the estimator
+  DeformationOptions deformation;
+  GroundTextureOptions texture;
+  RenderOptions render;
+  std::uint64_t seed = 1;
+};
+
+// "demo": 100 m above farmland at 20 m/s, 751 frames at 30 Hz (25 s, 500 m):
+// a straight, a gentle left turn of about 22 deg, a straight.
+SimScenario demoScenario();
+// "paper": like the paper's flight: 9600 frames at 30 Hz (320 s, 6.4 km at
+// 20 m/s), climbs and descents between about 37 and 118 m above the mean
+// ground, three turns, a slight attitude wobble, the rig deforming within
+// +-1 mm and +-0.01 rad of its calibration.
+SimScenario paperScenario();
+
+// A named scenario ("demo", "paper") or a YAML file (docs/simulator.md: every
+// key optional; `base: demo|paper` picks the starting point, default demo).
+// Throws lrsvo::Error on an unknown name, an unreadable file, an unknown key
+// (the message names it) or a value of the wrong type.
+SimScenario loadScenario(const std::string& spec);
+SimScenario readScenarioYaml(const std::string& path);
+// Writes every setting, so that readScenarioYaml gives the scenario back.
+void writeScenarioYaml(const SimScenario& scenario, const std::string& path);
+
+}  // namespace lrsvo

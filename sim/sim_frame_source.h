@@ -1,0 +1,54 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "frontend/frame_source.h"
+#include "sim/flight_truth.h"
+#include "sim/ground_texture.h"
+#include "sim/image_renderer.h"
+#include "sim/scenario.h"
+#include "sim/terrain.h"
+
+namespace lrsvo {
+
+// A synthetic flight rendered frame by frame on demand (nothing on disk, so
+// a 9600-frame flight streams): each camera's image from its true pose (the
+// base pose and, for camera k >= 1, its deformed extrinsic of that frame).
+// rig() is the scenario's calibration; the images are undistorted.
+class SimFrameSource : public FrameSource {
+ public:
+  // Flies the scenario (throws lrsvo::Error on bad options or a flight that
+  // is not above the terrain).
+  explicit SimFrameSource(SimScenario scenario);
+
+  std::string name() const override { return "sim:" + scenario_.name; }
+  const Rig& rig() const override { return scenario_.rig; }
+  const std::vector<LensDistortion>& distortion() const override { return distortion_; }
+  int frameCount() const override { return static_cast<int>(truth_.times_s.size()); }
+  std::optional<StereoFrame> next() override;
+  // The true base pose (world-from-camera) and secondary extrinsics of every frame.
+  GroundTruth groundTruth() const override;
+
+  // Renders any frame (0 <= index < frameCount()), independently of next().
+  StereoFrame render(int index) const;
+  const SimScenario& scenario() const { return scenario_; }
+  const FlightTruth& truth() const { return truth_; }
+
+ private:
+  SimScenario scenario_;
+  Terrain terrain_;
+  GroundTexture texture_;
+  ImageRenderer renderer_;
+  FlightTruth truth_;
+  std::vector<LensDistortion> distortion_;
+  int next_ = 0;
+};
+
+// The source for `lrsvo run sim:SPEC`: SPEC is "demo", "paper" or a YAML path
+// (sim/scenario.h: loadScenario).
+std::unique_ptr<FrameSource> makeSimSource(const std::string& spec);
+
+}  // namespace lrsvo

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sim/terrain.h"
+
+namespace lrsvo {
+
+// Where a camera ray meets the terrain's surface, and on what.
+struct SurfaceHit {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // world
+  const Terrain::Tree* tree = nullptr;              // the crown hit, if any
+  const Terrain::Building* building = nullptr;      // the building hit (roof or wall), if any
+};
+
+// The grey level (albedo, 0..255) of the surface at a hit, averaged over a
+// patch `footprint_m` across (one pixel's footprint), so that detail finer
+// than a pixel averages out instead of aliasing.
+class SurfaceTexture {
+ public:
+  virtual ~SurfaceTexture() = default;
+  // Called once before the grey() calls of one image, with all its hits and
+  // footprints: a texture may fill its caches here (on up to `threads`
+  // threads). grey() may then run on many threads at once; prepare() must
+  // not run while another image of the same texture is being shaded.
+  virtual void prepare(const std::vector<SurfaceHit>& hits, const std::vector<float>& footprints_m, int threads) const {
+    (void)hits, (void)footprints_m, (void)threads;
+  }
+  virtual float grey(const SurfaceHit& hit, double footprint_m) const = 0;
+};
+
+}  // namespace lrsvo

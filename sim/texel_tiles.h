@@ -1,0 +1,66 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace lrsvo {
+
+// A lazily filled, world-aligned mipmap of a costly 2D texture
+// f(x, y, footprint_m): level L holds f at texels spaced s_L = base * 2^L,
+// each filtered over s_L, in square tiles computed on first use and kept
+// while recent images use them. A pixel of footprint w reads levels L and
+// L + 1 around log2(w / base) and interpolates tri-linearly, so each texel is
+// computed once for many frames of a slowly moving camera. Values depend only
+// on the texture and the position, never on what is cached: the same input
+// gives the same image.
+class TexelTiles {
+ public:
+  using Function = std::function<float(double x, double y, double footprint_m)>;
+
+  // Throws lrsvo::Error on a non-positive base texel or keepImages < 1.
+  TexelTiles(Function function, double baseTexel_m, int keepImages = 8);
+
+  // Fills every tile that sample() will read for these points (x, y) and
+  // footprints, on up to `threads` threads; tiles no image has read for
+  // keepImages calls are dropped. Not safe while another thread samples.
+  void require(const std::vector<Eigen::Vector2d>& points, const std::vector<float>& footprints_m, int threads);
+  // The texture at (x, y) for a pixel footprint; (x, y, footprint) must have
+  // been passed to the last require(). Safe on many threads at once.
+  float sample(double x, double y, double footprint_m) const;
+
+ private:
+  static constexpr int kLevels = 32;  // up to 2^31 base texels: far coarser than any footprint
+  static constexpr int kTile = 64;    // texels per side (+ one shared row and column for interpolation)
+  struct Key {
+    std::int64_t tx, ty;
+    int level;
+    bool operator==(const Key& other) const = default;
+  };
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const;
+  };
+  struct Tile {
+    std::vector<float> texels;  // (kTile + 1)^2, row-major in y
+    std::int64_t lastUsed = 0;
+  };
+
+  double texel(int level) const;
+  void levels(double footprint_m, int& level, double& fraction) const;
+  Key keyOf(double x, double y, int level) const;
+  float bilinear(double x, double y, int level) const;
+
+  Function function_;
+  double base_m_;
+  double texel_[kLevels];  // spacing per level
+  int keep_;
+  std::int64_t images_ = 0;      // require() calls
+  std::int64_t generation_ = 0;  // of the last require(), unique over all instances
+  std::unordered_map<Key, std::unique_ptr<Tile>, KeyHash> tiles_;
+};
+
+}  // namespace lrsvo
