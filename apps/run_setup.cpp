@@ -1,0 +1,76 @@
+#include "apps/run_setup.h"
+
+#include <algorithm>
+
+#include "frontend/source_factory.h"
+#include "sim/sim_frame_source.h"
+
+namespace lrsvo::cli {
+
+void OdometrySettings::addOptions(CLI::App& command) {
+  command
+      .add_option("--constraint", constraint,
+                  "How the stereo extrinsic S is kept inside its bounds in the window adjustment: log_barrier (the "
+                  "paper's), gradient_projection, nlopt_lbfgs, nlopt_mma, or none (S free: the paper's "
+                  "unconstrained comparison)")
+      ->capture_default_str();
+  command.add_flag("--rigid", rigid, "Hold S at its calibration (conventional rigid stereo VO, the failing baseline)");
+  command.add_option("--window", window, "Keyframes in the sliding window (paper: 12-15)")
+      ->check(CLI::Range(3, 100))
+      ->capture_default_str();
+  command.add_option("--detector", detector, "Feature detector: gftt or fast (KLT tracking), orb (descriptors)")
+      ->capture_default_str();
+  command.add_option("--features", features, "Features kept per frame (new ones detected below this)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command
+      .add_option("--band", band_px,
+                  "Half-width in pixels of the loosened epipolar band stereo matches must lie in (a flexed rig moves "
+                  "the epipolar lines)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command
+      .add_option("--min-depth", minDepth_m,
+                  "Nearest depth (m) the stereo matcher searches for: it bounds the disparity range (20 m suits a "
+                  "flight at 30-120 m; a room-scale data set such as EuRoC needs ~0.5)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command.add_option("--solver", solver, "Solver of the window adjustment (lrsvo solvers lists them)")
+      ->capture_default_str();
+  command.add_option("--seed", seed, "Seed of every random draw (RANSAC, MLESAC)")->capture_default_str();
+}
+
+RunOptions OdometrySettings::runOptions() const {
+  RunOptions options;
+  OdometryOptions& odometry = options.odometry;
+  odometry.windowSize = window;
+  odometry.solver = solver;
+  odometry.seed = seed;
+  if (rigid)
+    odometry.extrinsicMode = ExtrinsicMode::kRigid;
+  else if (constraint == "none")
+    odometry.extrinsicMode = ExtrinsicMode::kFree;
+  else
+    odometry.constraintMethod = constraint;
+  odometry.validate();
+  options.frontEnd.tracker.detector.name = detector;
+  options.frontEnd.tracker.targetFeatures = features;
+  options.frontEnd.stereo.bandWidth_px = band_px;
+  options.frontEnd.stereo.minDepth_m = minDepth_m;
+  options.frontEnd.seed = seed;
+  return options;
+}
+
+std::unique_ptr<FrameSource> openSource(const std::string& spec) {
+  if (spec.rfind("sim:", 0) == 0) return makeSimSource(spec.substr(4));
+  return openDatasetSource(spec);
+}
+
+std::string folderName(const std::string& spec) {
+  std::string name = spec;
+  std::replace_if(name.begin(), name.end(), [](char c) { return c == ':' || c == '/' || c == '.'; }, '_');
+  name.erase(0, name.find_first_not_of('_'));
+  return name.empty() ? "run" : name;
+}
+
+}  // namespace lrsvo::cli

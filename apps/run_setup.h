@@ -1,0 +1,39 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "eval/odometry_run.h"
+#include "frontend/frame_source.h"
+
+namespace lrsvo::cli {
+
+// The odometry settings a user picks on the command line (`lrsvo run`,
+// `lrsvo bench run`), with the library's defaults.
+struct OdometrySettings {
+  std::string constraint = "log_barrier";
+  bool rigid = false;
+  int window = 15;
+  std::string detector = "gftt";
+  int features = 300;
+  double band_px = 8.0;
+  double minDepth_m = 20.0;
+  std::string solver = "lm_schur_dense";
+  std::uint64_t seed = 1;
+
+  void addOptions(CLI::App& command);
+  // The odometry and front-end options these settings stand for.
+  RunOptions runOptions() const;
+};
+
+// "sim:demo", "sim:paper", "sim:FILE.yaml" (rendered on the fly), or a data
+// set on disk: "DIR", "euroc:DIR", "kitti:DIR".
+std::unique_ptr<FrameSource> openSource(const std::string& spec);
+
+// A name for the output folder made from a source spec ("sim:demo" -> "sim_demo").
+std::string folderName(const std::string& spec);
+
+}  // namespace lrsvo::cli
