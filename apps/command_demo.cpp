@@ -22,6 +22,7 @@ struct DemoOptions {
   int frames = -1;
   bool noPlot = false;
   bool quiet = false;
+  bool featureLevel = false;
   OdometrySettings settings;
 };
 
@@ -45,7 +46,6 @@ std::string cell(const nlohmann::json& metrics, const char* key, const char* for
 }
 
 void runDemo(const DemoOptions& o) {
-  std::unique_ptr<FrameSource> source = openSource(o.source);
   std::vector<RunOptions> variants;
   for (const Variant& variant : kVariants) {
     RunOptions options = o.settings.runOptions();
@@ -54,21 +54,35 @@ void runDemo(const DemoOptions& o) {
     options.outDir = std::filesystem::path(o.out) / variant.name;
     variants.push_back(options);
   }
-  if (!o.quiet) variants.front().progress = &std::cerr;
-  const int frames = o.frames >= 0 && (source->frameCount() < 0 || o.frames < source->frameCount())
-                         ? o.frames
-                         : source->frameCount();
-  std::printf("lrsvo demo: %s, %d frames of %dx%d stereo (baseline %.2f m), the odometry three ways on the same images\n",
-              source->name().c_str(), frames, source->rig().cameras[0].width, source->rig().cameras[0].height,
-              source->rig().extrinsics[0].head<3>().norm());
-  std::fflush(stdout);
-  const std::vector<RunResult> runs = runOdometry(*source, variants);
+  if (!o.quiet)
+    for (RunOptions& variant : variants) variant.progress = &std::cerr;
+  std::vector<RunResult> runs;
+  GroundTruth truth;
+  auto header = [&](const std::string& name, int count, const Rig& rig) {
+    if (o.frames >= 0 && (count < 0 || o.frames < count)) count = o.frames;
+    std::printf("lrsvo demo: %s, %d frames of %dx%d stereo (baseline %.2f m), the odometry three ways on the same %s\n",
+                name.c_str(), count, rig.cameras[0].width, rig.cameras[0].height, rig.extrinsics[0].head<3>().norm(),
+                o.featureLevel ? "observations" : "images");
+    std::fflush(stdout);
+  };
+  if (o.featureLevel) {
+    FeatureLevelFlight flight = simulateFeatureLevel(o.source);
+    header(flight.name, static_cast<int>(flight.frames.size()), flight.rig);
+    runs = runOdometry(flight.rig, flight.frames, flight.truth, variants);
+    truth = std::move(flight.truth);
+  } else {
+    std::unique_ptr<FrameSource> source = openSource(o.source);
+    header(source->name(), source->frameCount(), source->rig());
+    for (std::size_t i = 1; i < variants.size(); ++i) variants[i].progress = nullptr;  // one shared stream
+    runs = runOdometry(*source, variants);
+    truth = source->groundTruth();
+  }
 
   std::printf("\n%-14s %-32s %9s %9s %10s %10s %11s %12s %7s\n", "variant", "stereo extrinsic S", "tracked",
               "distance", "ATE (m)", "drift (%)", "scale (%)", "final (m)", "fps");
   std::vector<std::string> notes;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    const RunReport report = writeRunReport(variants[i].outDir, runs[i], source->groundTruth(), !o.noPlot);
+    const RunReport report = writeRunReport(variants[i].outDir, runs[i], truth, !o.noPlot);
     const nlohmann::json& m = report.metrics;
     std::printf("%-14s %-32s %9s %9s %10s %10s %11s %12s %7s\n", kVariants[i].name, kVariants[i].what,
                 (std::to_string(runs[i].totals.tracked) + "/" + std::to_string(runs[i].totals.frames)).c_str(),
@@ -94,6 +108,9 @@ void addDemoCommand(CLI::App& app) {
   command->add_option("--frames", options->frames, "Stop after this many frames (default: the whole flight)");
   command->add_flag("--no-plot", options->noPlot, "Write tables and metrics.json only, no PNG");
   command->add_flag("--quiet", options->quiet, "No progress line");
+  command->add_flag("--feature-level", options->featureLevel,
+                    "Simulate the flight's feature observations instead of rendering images (the back end alone; "
+                    "minutes for --source sim:paper)");
   options->settings.addOptions(*command);
   command->footer(
       "Every frame is rendered once and fed to the three odometries. Each variant's folder holds what `lrsvo run` "

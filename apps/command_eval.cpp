@@ -79,7 +79,8 @@ void printMetrics(const TrajectoryMetrics& m) {
   } else {
     std::printf("  %-40s %12s  (no segment length fits the truth)\n", "KITTI drift", "-");
   }
-  printRow("scale error (path lengths)", m.scaleErrorPercent, "%");
+  printRow("scale error (Sim3)", m.scaleErrorPercent, "%");
+  printRow("path length error", m.pathLengthErrorPercent, "%");
   printRow("final position error, start-aligned", m.finalPositionError_m, "m");
   printRow("  of the distance", m.finalPositionErrorPercent, "%");
 }

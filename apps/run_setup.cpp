@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "frontend/source_factory.h"
+#include "graph/error.h"
+#include "sim/scenario.h"
 #include "sim/sim_frame_source.h"
 
 namespace lrsvo::cli {
@@ -64,6 +66,18 @@ RunOptions OdometrySettings::runOptions() const {
 std::unique_ptr<FrameSource> openSource(const std::string& spec) {
   if (spec.rfind("sim:", 0) == 0) return makeSimSource(spec.substr(4));
   return openDatasetSource(spec);
+}
+
+FeatureLevelFlight simulateFeatureLevel(const std::string& spec) {
+  if (spec.rfind("sim:", 0) != 0)
+    throw Error("--feature-level needs a sim: source (sim:demo, sim:paper, sim:FILE.yaml), not '" + spec + "'");
+  const SimScenario scenario = loadScenario(spec.substr(4));
+  SimulatedSequence sequence = simulateSequence(featureSimulationOptions(scenario));
+  FeatureLevelFlight flight{spec + " (feature level)", sequence.rig, std::move(sequence.frames), {}};
+  for (std::size_t i = 0; i < sequence.trueCameraFromWorld.size(); ++i)
+    flight.truth.poses.push_back({flight.frames[i].time_s, sequence.trueCameraFromWorld[i].inverse()});
+  flight.truth.extrinsics = std::move(sequence.trueExtrinsics);
+  return flight;
 }
 
 std::string folderName(const std::string& spec) {

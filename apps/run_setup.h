@@ -3,11 +3,13 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "eval/odometry_run.h"
 #include "frontend/frame_source.h"
+#include "frontend/observations.h"
 
 namespace lrsvo::cli {
 
@@ -32,6 +34,16 @@ struct OdometrySettings {
 // "sim:demo", "sim:paper", "sim:FILE.yaml" (rendered on the fly), or a data
 // set on disk: "DIR", "euroc:DIR", "kitti:DIR".
 std::unique_ptr<FrameSource> openSource(const std::string& spec);
+
+// A `sim:` source simulated at the feature level instead of rendered: the
+// same world, flight and flexing rig, observations without images.
+struct FeatureLevelFlight {
+  std::string name;
+  Rig rig;
+  std::vector<FrameObservations> frames;
+  GroundTruth truth;
+};
+FeatureLevelFlight simulateFeatureLevel(const std::string& spec);
 
 // A name for the output folder made from a source spec ("sim:demo" -> "sim_demo").
 std::string folderName(const std::string& spec);

@@ -49,22 +49,30 @@ void showProgress(std::ostream& out, const RunTotals& totals, double wall_s, int
 }  // namespace
 
 OdometryPipeline::OdometryPipeline(const FrameSource& source, const RunOptions& options)
-    : odometry_(std::make_unique<Odometry>(source.rig(), options.odometry)),
-      frontEnd_(std::make_unique<ImageFrontEnd>(source.rig(), source.distortion(), options.frontEnd)) {
-  if (!options.outDir.empty()) writer_ = std::make_unique<RunWriter>(options.outDir, source.rig(), source.groundTruth());
+    : OdometryPipeline(source.rig(), source.distortion(), source.groundTruth(), options) {}
+
+OdometryPipeline::OdometryPipeline(const Rig& rig, const std::vector<LensDistortion>& distortion,
+                                   const GroundTruth& truth, const RunOptions& options)
+    : odometry_(std::make_unique<Odometry>(rig, options.odometry)),
+      frontEnd_(std::make_unique<ImageFrontEnd>(rig, distortion, options.frontEnd)) {
+  if (!options.outDir.empty()) writer_ = std::make_unique<RunWriter>(options.outDir, rig, truth);
 }
 
 OdometryPipeline::~OdometryPipeline() = default;
 
 void OdometryPipeline::process(const StereoFrame& frame) {
-  RunTotals& totals = result_.totals;
-  auto start = Clock::now();
+  const auto start = Clock::now();
   const FrameObservations observations = frontEnd_->process(frame);
-  totals.frontEndSeconds += secondsSince(start);
-  addTimings(totals.frontEnd, frontEnd_->lastTimings());
-  pendingTimings_.push_back(frontEnd_->lastTimings());
+  result_.totals.frontEndSeconds += secondsSince(start);
+  process(observations, frontEnd_->lastTimings());
+}
 
-  start = Clock::now();
+void OdometryPipeline::process(const FrameObservations& observations, const FrontEndTimings& frontEnd) {
+  RunTotals& totals = result_.totals;
+  addTimings(totals.frontEnd, frontEnd);
+  pendingTimings_.push_back(frontEnd);
+
+  const auto start = Clock::now();
   const std::vector<FrameEstimate> estimates = odometry_->process(observations);
   frontEnd_->dropTracks(odometry_->takeRejectedTracks());
   totals.backEndSeconds += secondsSince(start);
@@ -118,6 +126,26 @@ std::vector<RunResult> runOdometry(FrameSource& source, const std::vector<RunOpt
   for (auto& pipeline : pipelines) {
     results.push_back(pipeline->finish());
     results.back().totals.sourceSeconds = sourceSeconds;
+  }
+  return results;
+}
+
+std::vector<RunResult> runOdometry(const Rig& rig, const std::vector<FrameObservations>& frames,
+                                   const GroundTruth& truth, const std::vector<RunOptions>& variants) {
+  std::vector<RunResult> results;
+  const std::vector<LensDistortion> none(rig.cameras.size());
+  for (const RunOptions& options : variants) {
+    OdometryPipeline pipeline(rig, none, truth, options);
+    int count = static_cast<int>(frames.size());
+    if (options.maxFrames >= 0) count = std::min(count, options.maxFrames);
+    const auto start = Clock::now();
+    for (int i = 0; i < count; ++i) {
+      pipeline.process(frames[static_cast<std::size_t>(i)]);
+      if (options.progress && (i + 1) % 100 == 0)
+        showProgress(*options.progress, pipeline.totals(), secondsSince(start), count, false);
+    }
+    if (options.progress) showProgress(*options.progress, pipeline.totals(), secondsSince(start), count, true);
+    results.push_back(pipeline.finish());
   }
   return results;
 }

@@ -54,8 +54,14 @@ struct RunResult {
 class OdometryPipeline {
  public:
   OdometryPipeline(const FrameSource& source, const RunOptions& options);
+  // Without a source: the rig, its lens distortion and what is known of the truth.
+  OdometryPipeline(const Rig& rig, const std::vector<LensDistortion>& distortion, const GroundTruth& truth,
+                   const RunOptions& options);
   ~OdometryPipeline();
+  // Images through the front end, then the odometry.
   void process(const StereoFrame& frame);
+  // Observations straight into the odometry (a feature-level simulation: no front end).
+  void process(const FrameObservations& observations, const FrontEndTimings& frontEnd = {});
   // Ends the run (frames still buffered for an initialisation stay untracked).
   RunResult finish();
   const RunTotals& totals() const { return result_.totals; }
@@ -74,5 +80,9 @@ class OdometryPipeline {
 // frame read or rendered once); the source's time is added to every totals.
 RunResult runOdometry(FrameSource& source, const RunOptions& options);
 std::vector<RunResult> runOdometry(FrameSource& source, const std::vector<RunOptions>& variants);
+// The odometry over observations given in advance (a feature-level
+// simulation), one variant after the other; fps counts the odometry alone.
+std::vector<RunResult> runOdometry(const Rig& rig, const std::vector<FrameObservations>& frames,
+                                   const GroundTruth& truth, const std::vector<RunOptions>& variants);
 
 }  // namespace lrsvo

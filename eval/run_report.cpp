@@ -70,7 +70,7 @@ RunReport writeRunReport(const std::filesystem::path& outDir, const RunResult& r
       trajectory["frames_matched"] = trajectory["frames"];
       trajectory.erase("frames");
       report.metrics.update(trajectory);
-      if (plots) {
+      if (plots && !outDir.empty()) {
         writeTrajectoryTable(outDir, matched, metrics, true);
         const TrajectoryPlots drawn = plotTrajectory(outDir);
         report.plots = drawn.files;
@@ -78,11 +78,11 @@ RunReport writeRunReport(const std::filesystem::path& outDir, const RunResult& r
       }
     }
   }
-  if (plots && run.totals.tracked > 0) {
+  if (plots && !outDir.empty() && run.totals.tracked > 0) {
     const std::string warning = plotExtrinsics(outDir, report.plots);
     if (!warning.empty()) report.warning += (report.warning.empty() ? "" : "; ") + warning;
   }
-  std::ofstream(outDir / "metrics.json") << report.metrics.dump(2) << '\n';
+  if (!outDir.empty()) std::ofstream(outDir / "metrics.json") << report.metrics.dump(2) << '\n';
   return report;
 }
 

@@ -23,7 +23,7 @@ struct RunReport {
 // and with the truth distance_m, ate_rmse_m, drift_percent,
 // scale_error_percent, ...) and the plots (trajectory against truth, position
 // and orientation error over time, the extrinsic's six parameters over time
-// with their bounds) into outDir.
+// with their bounds) into outDir; an empty outDir writes nothing.
 RunReport writeRunReport(const std::filesystem::path& outDir, const RunResult& run, const GroundTruth& truth,
                          bool plots);
 

@@ -194,7 +194,11 @@ TrajectoryMetrics computeTrajectoryMetrics(const AssociatedTrajectories& matched
   metrics.rpeDistanceRotation_rad = errorStatistics(byDistance.rotation_rad);
 
   metrics.drift = kittiDrift(estimate, truth, options.driftLengths_m);
-  metrics.scaleErrorPercent = 100.0 * (pathLength(estimate) / metrics.distance_m - 1.0);
+  // The estimate's size against the truth's from the least-squares similarity
+  // (truth ~ s R estimate + t); path lengths also count the estimate's
+  // frame-to-frame jitter, which inflates them, so they are reported apart.
+  metrics.scaleErrorPercent = 100.0 * (1.0 / metrics.sim3.scale - 1.0);
+  metrics.pathLengthErrorPercent = 100.0 * (pathLength(estimate) / metrics.distance_m - 1.0);
   const Trajectory startAligned = transformed(estimate, alignFirstPose(estimate, truth));
   metrics.finalPositionError_m = positionErrors(startAligned, truth).back();
   metrics.finalPositionErrorPercent = 100.0 * metrics.finalPositionError_m / metrics.distance_m;
@@ -232,6 +236,7 @@ nlohmann::json toJson(const TrajectoryMetrics& metrics) {
   json["drift_lengths_m"] = lengths.empty() ? nlohmann::json() : lengths;
   json["drift_per_length"] = perLength;
   json["scale_error_percent"] = numberOrNull(metrics.scaleErrorPercent);
+  json["path_length_error_percent"] = numberOrNull(metrics.pathLengthErrorPercent);
   json["final_position_error_m"] = metrics.finalPositionError_m;
   json["final_position_error_percent"] = numberOrNull(metrics.finalPositionErrorPercent);
   return json;

@@ -223,6 +223,19 @@ void writeVector6(cv::FileStorage& fs, const char* key, const Vector6& v) {
 
 }  // namespace
 
+FeatureSimulationOptions featureSimulationOptions(const SimScenario& scenario, int pointsPerFrame,
+                                                  double pixelNoise_px) {
+  FeatureSimulationOptions options;
+  options.flight = scenario.flight;
+  options.terrain = scenario.terrain;
+  options.rig = scenario.rig;
+  options.deformation = scenario.deformation;
+  options.pointsPerFrame = pointsPerFrame;
+  options.pixelNoise_px = pixelNoise_px;
+  options.seed = scenario.seed;
+  return options;
+}
+
 SimScenario demoScenario() {
   SimScenario s;
   s.name = "demo";

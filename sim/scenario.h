@@ -4,6 +4,7 @@
 #include <string>
 
 #include "frontend/rig.h"
+#include "sim/feature_simulator.h"
 #include "sim/flight.h"
 #include "sim/ground_texture.h"
 #include "sim/image_renderer.h"
@@ -36,6 +37,13 @@ SimScenario demoScenario();
 // ground, three turns, a slight attitude wobble, the rig deforming within
 // +-1 mm and +-0.01 rad of its calibration.
 SimScenario paperScenario();
+
+// The scenario's world, flight and flexing rig as a feature-level simulation
+// (sim/feature_simulator.h): no images, `pointsPerFrame` scene points in
+// view, `pixelNoise_px` on every observation. Runs the odometry on a long
+// flight in minutes where rendering it takes hours.
+FeatureSimulationOptions featureSimulationOptions(const SimScenario& scenario, int pointsPerFrame = 300,
+                                                  double pixelNoise_px = 0.5);
 
 // A named scenario ("demo", "paper") or a YAML file (docs/simulator.md: every
 // key optional; `base: demo|paper` picks the starting point, default demo).
