@@ -3,7 +3,7 @@
 #
 #   make build     install deps, configure (Ninja, Release) and build; binaries in build/bin/
 #   make test      build, then run every test with ctest
-#   make demo      build, then fly a synthetic long-range flight and initialise on it (lrsvo demo)
+#   make demo      build, then render a synthetic long-range flight and run the odometry on it three ways (lrsvo demo)
 #   make sanitize  build into build-asan/ with ASan + UBSan and run the tests there
 #   make format    clang-format every C++ file in place
 #   make clean     remove build/ and build-asan/
