@@ -96,8 +96,7 @@ void addBenchRun(CLI::App& app) {
   auto options = std::make_shared<BenchRunOptions>();
   CLI::App* command = bench::benchSubcommand(app).add_subcommand(
       "run", "Frames per second of the odometry alone on 1280x960 stereo, time per stage, memory over a long run");
-  command->add_option("--source", options->source, "Any `lrsvo run` source with enough frames")
-      ->capture_default_str();
+  command->add_option("--source", options->source, "Any `lrsvo run` source with enough frames")->capture_default_str();
   command->add_option("--checkpoints", options->checkpoints, "Frame counts at which to report speed and memory")
       ->capture_default_str();
   options->settings.addOptions(*command);

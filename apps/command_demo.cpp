@@ -78,8 +78,8 @@ void runDemo(const DemoOptions& o) {
     truth = source->groundTruth();
   }
 
-  std::printf("\n%-14s %-32s %9s %9s %10s %10s %11s %12s %7s\n", "variant", "stereo extrinsic S", "tracked",
-              "distance", "ATE (m)", "drift (%)", "scale (%)", "final (m)", "fps");
+  std::printf("\n%-14s %-32s %9s %9s %10s %10s %11s %12s %7s\n", "variant", "stereo extrinsic S", "tracked", "distance",
+              "ATE (m)", "drift (%)", "scale (%)", "final (m)", "fps");
   std::vector<std::string> notes;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const RunReport report = writeRunReport(variants[i].outDir, runs[i], truth, !o.noPlot);

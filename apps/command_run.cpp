@@ -52,8 +52,8 @@ void printHeader(const std::string& name, int frames, const Rig& rig, const RunO
 void runCommand(const RunCommandOptions& o) {
   RunOptions options = o.settings.runOptions();
   options.maxFrames = o.frames;
-  options.outDir = o.out.empty() ? std::filesystem::path("lrsvo_runs") / folderName(o.source)
-                                  : std::filesystem::path(o.out);
+  options.outDir =
+      o.out.empty() ? std::filesystem::path("lrsvo_runs") / folderName(o.source) : std::filesystem::path(o.out);
   if (!o.quiet) options.progress = &std::cerr;
   RunResult run;
   GroundTruth truth;
@@ -79,10 +79,11 @@ void runCommand(const RunCommandOptions& o) {
 void addRunCommand(CLI::App& app) {
   auto options = std::make_shared<RunCommandOptions>();
   CLI::App* command = app.add_subcommand("run", "Run the long-range stereo odometry on a stereo sequence");
-  command->add_option("source", options->source,
-                       "sim:demo | sim:paper | sim:FILE.yaml (a synthetic flight rendered on the fly), or a data set "
-                       "folder in the EuRoC (DIR/mav0) or KITTI odometry (DIR/image_0, calib.txt) layout; "
-                       "euroc:DIR or kitti:DIR forces the layout")
+  command
+      ->add_option("source", options->source,
+                   "sim:demo | sim:paper | sim:FILE.yaml (a synthetic flight rendered on the fly), or a data set "
+                   "folder in the EuRoC (DIR/mav0) or KITTI odometry (DIR/image_0, calib.txt) layout; "
+                   "euroc:DIR or kitti:DIR forces the layout")
       ->required();
   command->add_option("--out", options->out, "Output folder (default lrsvo_runs/<source>)");
   command->add_option("--frames", options->frames, "Stop after this many frames (default: all)");

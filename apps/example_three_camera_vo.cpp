@@ -41,8 +41,8 @@ int main(int argc, char** argv) {
     lrsvo::RunOptions options;
     options.maxFrames = frames;
     options.outDir = out;
-    options.frontEnd.tracker.detector.name = "fast";              // a different detector, by name
-    options.odometry.constraintMethod = "gradient_projection";   // a different constraint plugin, by name
+    options.frontEnd.tracker.detector.name = "fast";            // a different detector, by name
+    options.odometry.constraintMethod = "gradient_projection";  // a different constraint plugin, by name
     options.odometry.extrinsicMode = lrsvo::ExtrinsicMode::kBounded;
 
     const lrsvo::RunResult run = lrsvo::runOdometry(source, options);

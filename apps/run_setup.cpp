@@ -82,7 +82,8 @@ FeatureLevelFlight simulateFeatureLevel(const std::string& spec) {
 
 std::string folderName(const std::string& spec) {
   std::string name = spec;
-  std::replace_if(name.begin(), name.end(), [](char c) { return c == ':' || c == '/' || c == '.'; }, '_');
+  std::replace_if(
+      name.begin(), name.end(), [](char c) { return c == ':' || c == '/' || c == '.'; }, '_');
   name.erase(0, name.find_first_not_of('_'));
   return name.empty() ? "run" : name;
 }

@@ -2,8 +2,8 @@
 
 #include <deque>
 #include <filesystem>
-#include <memory>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 

@@ -14,7 +14,7 @@ namespace lrsvo {
 // What a finished run reports: its counts and speed, and, when the source
 // knows the truth, the trajectory metrics (eval/trajectory_metrics.h).
 struct RunReport {
-  nlohmann::json metrics;                   // also written as metrics.json
+  nlohmann::json metrics;                    // also written as metrics.json
   std::vector<std::filesystem::path> plots;  // PNGs written
   std::string warning;                       // why plots or metrics are missing, if they are
 };

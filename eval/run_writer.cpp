@@ -17,7 +17,9 @@ std::ofstream openOutput(const std::filesystem::path& file) {
   return out;
 }
 
-nlohmann::json vectorJson(const VertexStereoExtrinsic::Vector6& v) { return std::vector<double>(v.data(), v.data() + 6); }
+nlohmann::json vectorJson(const VertexStereoExtrinsic::Vector6& v) {
+  return std::vector<double>(v.data(), v.data() + 6);
+}
 
 }  // namespace
 
@@ -49,8 +51,8 @@ void RunWriter::write(const FrameEstimate& e, const FrontEndTimings& f) {
           << e.observations << ',' << f.tracked << ',' << f.added << ',' << f.stereoMatched << ',' << e.mappedMatches
           << ',' << e.poseInliers << ',' << e.mapPoints << ',' << e.windowFrames << ',' << e.windowRmsError_px << ','
           << e.bundleIterations << ',' << f.detect_ms << ',' << f.track_ms << ',' << f.stereo_ms << ','
-          << f.undistort_ms << ',' << e.times.initialize_ms << ',' << e.times.pose_ms << ','
-          << e.times.triangulate_ms << ',' << e.times.bundle_ms << '\n';
+          << f.undistort_ms << ',' << e.times.initialize_ms << ',' << e.times.pose_ms << ',' << e.times.triangulate_ms
+          << ',' << e.times.bundle_ms << '\n';
   if (!e.tracked) return;
   const Eigen::Isometry3d worldFromCamera = e.cameraFromWorld.inverse();
   const Eigen::Quaterniond q(worldFromCamera.rotation());

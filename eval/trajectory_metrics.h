@@ -83,8 +83,8 @@ struct TrajectoryMetrics {
   ErrorStatistics rpeTranslation_m, rpeRotation_rad;                  // delta in frames
   ErrorStatistics rpeDistanceTranslation_m, rpeDistanceRotation_rad;  // delta in metres
   KittiDrift drift;
-  double scaleErrorPercent = 0.0;       // 100 (1 / s - 1), s the Sim3 alignment's scale (truth ~ s R est + t)
-  double pathLengthErrorPercent = 0.0;  // 100 (L_estimate / L_truth - 1), L the path lengths
+  double scaleErrorPercent = 0.0;          // 100 (1 / s - 1), s the Sim3 alignment's scale (truth ~ s R est + t)
+  double pathLengthErrorPercent = 0.0;     // 100 (L_estimate / L_truth - 1), L the path lengths
   double finalPositionError_m = 0.0;       // at the last pose, start-aligned
   double finalPositionErrorPercent = 0.0;  // of distance_m
 };

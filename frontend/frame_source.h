@@ -39,7 +39,7 @@ struct TimedPose {
 
 // What a source knows of the truth; either part may be empty.
 struct GroundTruth {
-  std::vector<TimedPose> poses;                                        // base camera, by time
+  std::vector<TimedPose> poses;                                         // base camera, by time
   std::vector<std::vector<VertexStereoExtrinsic::Vector6>> extrinsics;  // [frame][k - 1]: camera k's true s
 };
 

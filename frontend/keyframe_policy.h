@@ -23,8 +23,7 @@ class KeyframePolicy {
   const KeyframePolicyOptions& options() const { return options_; }
 
   // `framesSinceKeyframe` counts from the last keyframe (1 = the next frame).
-  bool isKeyframe(const FrameObservations& lastKeyframe, const FrameObservations& frame,
-                  int framesSinceKeyframe) const;
+  bool isKeyframe(const FrameObservations& lastKeyframe, const FrameObservations& frame, int framesSinceKeyframe) const;
 
  private:
   KeyframePolicyOptions options_;

@@ -152,8 +152,8 @@ bool Odometry::estimateFramePose(const FrameObservations& frame, int index, Eige
   const PinholeIntrinsics& intrinsics = rig_.cameras[0].intrinsics;
   for (std::size_t i = 0; i < matches.size(); ++i) {
     const Eigen::Vector3d inCamera = cameraFromWorld * matches[i].point;
-    const bool outlier = inCamera.z() <= 0.0 ||
-                         (intrinsics.project(inCamera) - matches[i].pixel).norm() > options_.outlierThreshold_px;
+    const bool outlier =
+        inCamera.z() <= 0.0 || (intrinsics.project(inCamera) - matches[i].pixel).norm() > options_.outlierThreshold_px;
     if (outlier) rejected.push_back(tracks[i]);
   }
   window_.removeTracks(rejected);

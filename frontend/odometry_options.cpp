@@ -17,12 +17,9 @@ ExtrinsicMode extrinsicModeFromName(const std::string& name) {
 
 const char* extrinsicModeName(ExtrinsicMode mode) {
   switch (mode) {
-    case ExtrinsicMode::kBounded:
-      return "bounded";
-    case ExtrinsicMode::kFree:
-      return "free";
-    case ExtrinsicMode::kRigid:
-      return "rigid";
+    case ExtrinsicMode::kBounded: return "bounded";
+    case ExtrinsicMode::kFree: return "free";
+    case ExtrinsicMode::kRigid: return "rigid";
   }
   return "?";
 }

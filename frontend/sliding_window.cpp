@@ -72,8 +72,7 @@ SolverSummary SlidingWindow::solve(BundleGraph& bundle) const {
       return optimizeWithBounds(bundle.graph(), solver, bundle.extrinsicBounds(), options_.constraintMethod,
                                 options_.constraintSettings);
     case ExtrinsicMode::kFree:
-    case ExtrinsicMode::kRigid:
-      break;
+    case ExtrinsicMode::kRigid: break;
   }
   return Optimizer(solver).optimize(bundle.graph());
 }

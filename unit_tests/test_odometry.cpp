@@ -50,8 +50,8 @@ double finalErrorFraction(const std::vector<FrameEstimate>& estimates, const Sim
                           const Eigen::Isometry3d& firstFromWorld) -> Eigen::Vector3d {
     return (cameraFromWorld * firstFromWorld.inverse()).inverse().translation();
   };
-  const Eigen::Vector3d truth = centreInFirst(sequence.trueCameraFromWorld[last->frame],
-                                              sequence.trueCameraFromWorld[first->frame]);
+  const Eigen::Vector3d truth =
+      centreInFirst(sequence.trueCameraFromWorld[last->frame], sequence.trueCameraFromWorld[first->frame]);
   const Eigen::Vector3d estimate = centreInFirst(last->cameraFromWorld, first->cameraFromWorld);
   return (estimate - truth).norm() / truth.norm();
 }
@@ -64,7 +64,7 @@ TEST(KeyframePolicy, MotionSharedTracksAndGap) {
   }
   KeyframePolicy policy({.minMedianMotion_px = 30.0, .minSharedFraction = 0.7, .maxFrameGap = 5});
   EXPECT_FALSE(policy.isKeyframe(last, frame, 1));
-  EXPECT_TRUE(policy.isKeyframe(last, frame, 5));  // the gap
+  EXPECT_TRUE(policy.isKeyframe(last, frame, 5));                 // the gap
   for (Observation& o : frame.observations) o.pixel.x() += 25.0;  // 35 px
   EXPECT_TRUE(policy.isKeyframe(last, frame, 1));
   for (Observation& o : frame.observations) o.pixel.x() -= 25.0;
@@ -100,9 +100,9 @@ TEST(OdometryFlight, BoundedExtrinsicTracksAFlexedRigWhereRigidStereoFails) {
     EXPECT_TRUE(bounded[i].tracked) << "frame " << i;
     EXPECT_EQ(bounded[i].segment, 0);
   }
-  EXPECT_GT(std::count_if(bounded.begin() + initialisation, bounded.end(),
-                          [](const FrameEstimate& e) { return e.keyframe; }),
-            10);
+  EXPECT_GT(
+      std::count_if(bounded.begin() + initialisation, bounded.end(), [](const FrameEstimate& e) { return e.keyframe; }),
+      10);
   const double boundedError = finalErrorFraction(bounded, sequence);
   EXPECT_LT(boundedError, 0.05);
   // S stayed in its box.
@@ -129,8 +129,8 @@ TEST(OdometryFlight, RecoversFromTrackingLossInANewSegment) {
   EXPECT_TRUE(estimates.back().tracked);
   EXPECT_EQ(estimates.back().segment, 1);
   const Eigen::Vector3d lastOfFirst = estimates[blackout - 1].cameraFromWorld.inverse().translation();
-  auto firstOfSecond = std::find_if(estimates.begin() + blackout, estimates.end(),
-                                    [](const FrameEstimate& e) { return e.tracked; });
+  auto firstOfSecond =
+      std::find_if(estimates.begin() + blackout, estimates.end(), [](const FrameEstimate& e) { return e.tracked; });
   ASSERT_NE(firstOfSecond, estimates.end());
   EXPECT_LT((firstOfSecond->cameraFromWorld.inverse().translation() - lastOfFirst).norm(), 1e-6);
 }
