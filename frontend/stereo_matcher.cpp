@@ -138,8 +138,7 @@ bool StereoMatcher::inBand(const Segment& segment, const Eigen::Vector2d& pixel)
 
 bool StereoMatcher::search(const KltImage& base, const KltImage& secondary, const cv::Point2f& baseRaw,
                            const Segment& segment, cv::Point2f& found) const {
-  const int level =
-      std::min(options_.searchLevel, static_cast<int>(std::min(base.pyramid.size(), secondary.pyramid.size())) - 1);
+  const int level = std::min(options_.searchLevel, std::min(base.levels(), secondary.levels()) - 1);
   const double step = std::ldexp(1.0, level);  // one pixel of the search level
   const float scale = static_cast<float>(1.0 / step);
   const std::vector<float> reference = referencePatch(base.level(level), baseRaw * scale, options_.searchPatch_px);
