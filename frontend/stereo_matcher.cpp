@@ -9,6 +9,10 @@
 namespace lrsvo {
 namespace {
 
+// Pyramid levels above the full image for KLT from last frame's offset: a
+// stereo match barely moves between frames, so the coarse levels add nothing.
+constexpr int kFollowLevels = 1;
+
 Eigen::Vector2d project(const PinholeIntrinsics& k, const Eigen::Vector3d& p) {
   return {k.fx * p.x() / p.z() + k.cx, k.fy * p.y() / p.z() + k.cy};
 }
@@ -175,10 +179,11 @@ std::vector<StereoMatch> StereoMatcher::match(const KltImage& base, const KltIma
   for (std::size_t i = 0; i < ids.size(); ++i) segments[i] = segmentOf(undistorted[i]);
 
   // Refines the guesses of `which` by KLT and keeps those inside the band.
-  auto refine = [&](const std::vector<std::size_t>& which, const std::vector<cv::Point2f>& guesses) {
+  auto refine = [&](const std::vector<std::size_t>& which, const std::vector<cv::Point2f>& guesses,
+                    const KltOptions& klt) {
     std::vector<cv::Point2f> points, moved = guesses;
     for (std::size_t i : which) points.push_back(raw[i]);
-    const std::vector<bool> found = trackKlt(base, secondary, points, moved, options_.klt);
+    const std::vector<bool> found = trackKlt(base, secondary, points, moved, klt);
     const std::vector<Eigen::Vector2d> movedPixels = undistorter_.undistort(moved);
     for (std::size_t j = 0; j < which.size(); ++j) {
       const std::size_t i = which[j];
@@ -197,7 +202,9 @@ std::vector<StereoMatch> StereoMatcher::match(const KltImage& base, const KltIma
     which.push_back(i);
     guesses.push_back(raw[i] + previous->second);
   }
-  refine(which, guesses);
+  KltOptions follow = options_.klt;
+  follow.levels = std::min(follow.levels, kFollowLevels);
+  refine(which, guesses, follow);
 
   which.clear();
   guesses.clear();
@@ -208,7 +215,7 @@ std::vector<StereoMatch> StereoMatcher::match(const KltImage& base, const KltIma
     which.push_back(i);
     guesses.push_back(guess);
   }
-  refine(which, guesses);
+  refine(which, guesses, options_.klt);
 
   std::vector<StereoMatch> result;
   previousOffset_.clear();
