@@ -23,7 +23,7 @@ KltImage makeKltImage(const cv::Mat& image, const KltOptions& options) {
   KltImage result;
   result.image = image;
   cv::buildOpticalFlowPyramid(image, result.pyramid, cv::Size(options.window_px, options.window_px), options.levels,
-                              /*withDerivatives=*/false);
+                              /*withDerivatives=*/true);
   return result;
 }
 
@@ -34,7 +34,7 @@ std::vector<bool> trackKlt(const KltImage& from, const KltImage& to, const std::
   if (points.empty()) return found;
   const cv::Size window(options.window_px, options.window_px);
   const cv::TermCriteria stop(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, options.iterations, options.epsilon_px);
-  const int levels = static_cast<int>(std::min(from.pyramid.size(), to.pyramid.size())) - 1;
+  const int levels = std::min({options.levels, from.levels() - 1, to.levels() - 1});
   std::vector<unsigned char> forward, backward;
   std::vector<float> error;
   cv::calcOpticalFlowPyrLK(from.pyramid, to.pyramid, points, positions, forward, error, window, levels, stop,

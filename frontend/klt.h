@@ -16,11 +16,14 @@ struct KltOptions {
 };
 
 // An image with its pyramid, built once and shared by every KLT call on it
-// (tracking in time, forward and backward, and stereo matching).
+// (tracking in time, forward and backward, and stereo matching). The pyramid
+// holds each level's derivatives too: without them every KLT call would
+// recompute them over the whole image.
 struct KltImage {
   cv::Mat image;                 // CV_8UC1, full resolution
-  std::vector<cv::Mat> pyramid;  // from cv::buildOpticalFlowPyramid, level 0 first
-  cv::Mat level(int l) const { return pyramid.at(static_cast<std::size_t>(l)); }
+  std::vector<cv::Mat> pyramid;  // from cv::buildOpticalFlowPyramid: level 0, its derivatives, level 1, ...
+  int levels() const { return static_cast<int>(pyramid.size() / 2); }  // the full image counts as one
+  cv::Mat level(int l) const { return pyramid.at(2 * static_cast<std::size_t>(l)); }
 };
 
 // Throws lrsvo::Error unless the image is a non-empty 8-bit grey image.

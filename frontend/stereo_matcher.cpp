@@ -9,6 +9,10 @@
 namespace lrsvo {
 namespace {
 
+// Pyramid levels above the full image for KLT from last frame's offset: a
+// stereo match barely moves between frames, so the coarse levels add nothing.
+constexpr int kFollowLevels = 1;
+
 Eigen::Vector2d project(const PinholeIntrinsics& k, const Eigen::Vector3d& p) {
   return {k.fx * p.x() / p.z() + k.cx, k.fy * p.y() / p.z() + k.cy};
 }
@@ -138,8 +142,7 @@ bool StereoMatcher::inBand(const Segment& segment, const Eigen::Vector2d& pixel)
 
 bool StereoMatcher::search(const KltImage& base, const KltImage& secondary, const cv::Point2f& baseRaw,
                            const Segment& segment, cv::Point2f& found) const {
-  const int level =
-      std::min(options_.searchLevel, static_cast<int>(std::min(base.pyramid.size(), secondary.pyramid.size())) - 1);
+  const int level = std::min(options_.searchLevel, std::min(base.levels(), secondary.levels()) - 1);
   const double step = std::ldexp(1.0, level);  // one pixel of the search level
   const float scale = static_cast<float>(1.0 / step);
   const std::vector<float> reference = referencePatch(base.level(level), baseRaw * scale, options_.searchPatch_px);
@@ -176,10 +179,11 @@ std::vector<StereoMatch> StereoMatcher::match(const KltImage& base, const KltIma
   for (std::size_t i = 0; i < ids.size(); ++i) segments[i] = segmentOf(undistorted[i]);
 
   // Refines the guesses of `which` by KLT and keeps those inside the band.
-  auto refine = [&](const std::vector<std::size_t>& which, const std::vector<cv::Point2f>& guesses) {
+  auto refine = [&](const std::vector<std::size_t>& which, const std::vector<cv::Point2f>& guesses,
+                    const KltOptions& klt) {
     std::vector<cv::Point2f> points, moved = guesses;
     for (std::size_t i : which) points.push_back(raw[i]);
-    const std::vector<bool> found = trackKlt(base, secondary, points, moved, options_.klt);
+    const std::vector<bool> found = trackKlt(base, secondary, points, moved, klt);
     const std::vector<Eigen::Vector2d> movedPixels = undistorter_.undistort(moved);
     for (std::size_t j = 0; j < which.size(); ++j) {
       const std::size_t i = which[j];
@@ -198,7 +202,9 @@ std::vector<StereoMatch> StereoMatcher::match(const KltImage& base, const KltIma
     which.push_back(i);
     guesses.push_back(raw[i] + previous->second);
   }
-  refine(which, guesses);
+  KltOptions follow = options_.klt;
+  follow.levels = std::min(follow.levels, kFollowLevels);
+  refine(which, guesses, follow);
 
   which.clear();
   guesses.clear();
@@ -209,7 +215,7 @@ std::vector<StereoMatch> StereoMatcher::match(const KltImage& base, const KltIma
     which.push_back(i);
     guesses.push_back(guess);
   }
-  refine(which, guesses);
+  refine(which, guesses, options_.klt);
 
   std::vector<StereoMatch> result;
   previousOffset_.clear();
