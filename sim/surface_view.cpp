@@ -69,7 +69,7 @@ SurfaceView::SurfaceView(const Terrain& terrain, const Camera& camera, const Eig
   listObstacles(terrain.minHeight() - 1.0);
 }
 
-Eigen::Vector3d SurfaceView::ray(double u, double v) const {
+inline Eigen::Vector3d SurfaceView::ray(double u, double v) const {
   const PinholeIntrinsics& k = camera_.intrinsics;
   return worldFromCameraRotation_ * Eigen::Vector3d((u - k.cx) / k.fx, (v - k.cy) / k.fy, 1.0);
 }
@@ -96,7 +96,7 @@ double SurfaceView::groundDepth(const Eigen::Vector3d& direction) const {
   return t;
 }
 
-double SurfaceView::interpolatedGroundDepth(double u, double v) const {
+inline double SurfaceView::interpolatedGroundDepth(double u, double v) const {
   const double gu = std::clamp(u / kGroundGrid_px, 0.0, nodesU_ - 1.0);
   const double gv = std::clamp(v / kGroundGrid_px, 0.0, nodesV_ - 1.0);
   const int i = std::min(static_cast<int>(gu), nodesU_ - 2), j = std::min(static_cast<int>(gv), nodesV_ - 2);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -13,11 +14,14 @@ namespace lrsvo {
 // A lazily filled, world-aligned mipmap of a costly 2D texture
 // f(x, y, footprint_m): level L holds f at texels spaced s_L = base * 2^L,
 // each filtered over s_L, in square tiles computed on first use and kept
-// while recent images use them. A pixel of footprint w reads levels L and
-// L + 1 around log2(w / base) and interpolates tri-linearly, so each texel is
+// while recent images use them. A pixel of footprint w reads the levels L
+// and L + 1 with s_L <= w < 2 s_L, bilinearly in each and blended linearly in
+// w between them (tri-linear filtering), so each texel is
 // computed once for many frames of a slowly moving camera. Values depend only
 // on the texture and the position, never on what is cached: the same input
-// gives the same image.
+// gives the same image. require() also lays the tiles of the current image
+// out in a small grid per level, so that sample() finds its tile by indexing
+// (no hashing, no locks) on any number of threads.
 class TexelTiles {
  public:
   using Function = std::function<float(double x, double y, double footprint_m)>;
@@ -48,19 +52,30 @@ class TexelTiles {
     std::vector<float> texels;  // (kTile + 1)^2, row-major in y
     std::int64_t lastUsed = 0;
   };
+  // The tiles of one level that the last require() listed, over the bounding
+  // box of their indices (null where none was listed).
+  struct LevelGrid {
+    std::int64_t tx0 = 0, ty0 = 0;
+    std::int64_t width = 0, height = 0;
+    std::vector<const Tile*> tiles;
+  };
 
-  double texel(int level) const;
   void levels(double footprint_m, int& level, double& fraction) const;
+  std::int64_t texelIndex(double coordinate, int level) const;
   Key keyOf(double x, double y, int level) const;
+  std::vector<Key> listKeys(const std::vector<Eigen::Vector2d>& points, const std::vector<float>& footprints_m,
+                            int threads) const;
+  void layOut(const std::vector<Key>& keys);
   float bilinear(double x, double y, int level) const;
 
   Function function_;
   double base_m_;
-  double texel_[kLevels];  // spacing per level
+  double texel_[kLevels];         // spacing per level
+  double inverseTexel_[kLevels];  // 1 / spacing: texel indices use this alone, wherever computed
   int keep_;
-  std::int64_t images_ = 0;      // require() calls
-  std::int64_t generation_ = 0;  // of the last require(), unique over all instances
+  std::int64_t images_ = 0;  // require() calls
   std::unordered_map<Key, std::unique_ptr<Tile>, KeyHash> tiles_;
+  std::array<LevelGrid, kLevels> grids_;
 };
 
 }  // namespace lrsvo

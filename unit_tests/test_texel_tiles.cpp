@@ -1,0 +1,54 @@
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "graph/error.h"
+#include "sim/texel_tiles.h"
+
+namespace lrsvo {
+namespace {
+
+constexpr double kBase_m = 0.01;
+
+// Affine in x, y and the footprint: bilinear interpolation within a level and
+// the blend between levels (linear in the footprint) both reproduce it
+// exactly, so every sample has a hand-computable value.
+float affine(double x, double y, double footprint_m) {
+  return static_cast<float>(3.0 * x - 2.0 * y + 100.0 * footprint_m);
+}
+
+TEST(TexelTiles, SamplesReproduceAnAffineTextureAcrossTilesLevelsAndNegativeCoordinates) {
+  TexelTiles tiles(affine, kBase_m);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> position(-7.0, 5.0), logFootprint(-8.0, -1.0);  // 0.3 mm .. 0.37 m
+  std::vector<Eigen::Vector2d> points;
+  std::vector<float> footprints;
+  for (int i = 0; i < 2000; ++i) {
+    points.emplace_back(position(rng), position(rng));
+    footprints.push_back(static_cast<float>(std::exp(logFootprint(rng))));
+  }
+  tiles.require(points, footprints, 2);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    // Footprints finer than the base texel read the base level.
+    const double expected = affine(points[i].x(), points[i].y(), std::max<double>(footprints[i], kBase_m));
+    ASSERT_NEAR(tiles.sample(points[i].x(), points[i].y(), footprints[i]), expected, 2e-3)
+        << "at (" << points[i].x() << ", " << points[i].y() << "), footprint " << footprints[i];
+  }
+}
+
+TEST(TexelTiles, SamplingOutsideTheLastRequiredTilesThrows) {
+  TexelTiles tiles(affine, kBase_m);
+  tiles.require({Eigen::Vector2d(0.1, 0.1)}, {0.02f}, 1);
+  EXPECT_NO_THROW(tiles.sample(0.1, 0.1, 0.02));
+  EXPECT_THROW(tiles.sample(50.0, -50.0, 0.02), Error);  // far from any listed tile
+  tiles.require({Eigen::Vector2d(-30.0, 20.0)}, {0.02f}, 1);
+  EXPECT_THROW(tiles.sample(0.1, 0.1, 0.02), Error);  // listed by the previous image only
+  EXPECT_NEAR(tiles.sample(-30.0, 20.0, 0.02), affine(-30.0, 20.0, 0.02), 2e-3);
+}
+
+TEST(TexelTiles, RejectsANonPositiveBaseTexel) { EXPECT_THROW(TexelTiles(affine, 0.0), Error); }
+
+}  // namespace
+}  // namespace lrsvo
