@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.h"
-#include "eval/pose_file.h"
+#include "frontend/pose_file.h"
 #include "eval/trajectory_metrics.h"
 #include "eval/trajectory_plots.h"
 #include "graph/error.h"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "eval/pose_file.h"
+#include "frontend/pose_file.h"
 #include "frontend/frame_estimate.h"
 #include "frontend/frame_source.h"
 #include "frontend/image_front_end.h"

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "eval/pose_file.h"
+#include "frontend/pose_file.h"
 
 namespace lrsvo {
 

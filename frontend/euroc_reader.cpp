@@ -8,7 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "frontend/rig_extrinsic.h"
-#include "frontend/tum_trajectory.h"
+#include "frontend/pose_file.h"
 #include "graph/error.h"
 
 namespace lrsvo {
@@ -125,12 +125,15 @@ EurocSource::EurocSource(const std::string& directory) : directory_(directory) {
 
   const std::string cameraTruth = directory + "/groundtruth_cam0_tum.txt";
   const std::string bodyTruth = directory + "/groundtruth_body_tum.txt";
-  if (fs::exists(cameraTruth)) {
-    truth_.poses = readTumTrajectory(cameraTruth);
-  } else if (fs::exists(bodyTruth)) {
-    truth_.poses = readTumTrajectory(bodyTruth);
-    for (TimedPose& pose : truth_.poses) pose.worldFromCamera = pose.worldFromCamera * calibration[0].bodyFromSensor;
-  }
+  auto readTruth = [&](const std::string& file, const Eigen::Isometry3d& bodyFromCamera) {
+    const Trajectory trajectory = readTumTrajectory(file);
+    for (std::size_t i = 0; i < trajectory.size(); ++i)
+      truth_.poses.push_back({trajectory.times_s[i], trajectory.worldFromCamera[i] * bodyFromCamera});
+  };
+  if (fs::exists(cameraTruth))
+    readTruth(cameraTruth, Eigen::Isometry3d::Identity());
+  else if (fs::exists(bodyTruth))
+    readTruth(bodyTruth, calibration[0].bodyFromSensor);
 }
 
 std::optional<StereoFrame> EurocSource::next() {

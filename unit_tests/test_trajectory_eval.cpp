@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "eval/pose_file.h"
+#include "frontend/pose_file.h"
 #include "eval/trajectory_alignment.h"
 #include "eval/trajectory_association.h"
 #include "eval/trajectory_metrics.h"

@@ -1,4 +1,4 @@
-#include "eval/pose_file.h"
+#include "frontend/pose_file.h"
 
 #include <cmath>
 #include <cstdlib>
