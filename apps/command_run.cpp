@@ -36,7 +36,8 @@ void printMetrics(const nlohmann::json& m) {
   number("ate_rmse_m", "%.3f m (SE3-aligned)");
   number("ate_sim3_rmse_m", "%.3f m (Sim3-aligned)");
   number("drift_percent", "%.3f %% (KITTI segments)");
-  number("scale_error_percent", "%+.3f %% (path length)");
+  number("scale_error_percent", "%+.3f %% (Sim3 alignment)");
+  number("path_length_error_percent", "%+.3f %% (path length)");
   number("final_position_error_m", "%.3f m (start-aligned)");
 }
 
