@@ -97,7 +97,10 @@ void addBenchRun(CLI::App& app) {
   CLI::App* command = bench::benchSubcommand(app).add_subcommand(
       "run", "Frames per second of the odometry alone on 1280x960 stereo, time per stage, memory over a long run");
   command->add_option("--source", options->source, "Any `lrsvo run` source with enough frames")->capture_default_str();
-  command->add_option("--checkpoints", options->checkpoints, "Frame counts at which to report speed and memory")
+  command
+      ->add_option("--checkpoints", options->checkpoints,
+                   "Frame counts at which to report speed and memory (e.g. 1000,5000)")
+      ->delimiter(',')
       ->capture_default_str();
   options->settings.addOptions(*command);
   command->callback([options] { benchRun(*options); });
