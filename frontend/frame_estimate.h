@@ -14,7 +14,6 @@ struct StageTimes {
   double pose_ms = 0.0;
   double triangulate_ms = 0.0;
   double bundle_ms = 0.0;
-  double total() const { return initialize_ms + pose_ms + triangulate_ms + bundle_ms; }
 };
 
 // The odometry's answer for one input frame.
