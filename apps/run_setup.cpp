@@ -20,6 +20,18 @@ void OdometrySettings::addOptions(CLI::App& command) {
   command.add_option("--window", window, "Keyframes in the sliding window (paper: 12-15)")
       ->check(CLI::Range(3, 100))
       ->capture_default_str();
+  command
+      .add_option("--anchors", anchors,
+                  "Retired keyframes held in each window adjustment: fixed views whose observations keep the window's "
+                  "map from tilting and rescaling (0: the window alone)")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
+  command
+      .add_option("--scale-drift", scaleDrift,
+                  "Relative scale drift allowed per keyframe: the process noise of the scale the held keyframes carry "
+                  "from window to window")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   command.add_option("--detector", detector, "Feature detector: gftt or fast (KLT tracking), orb (descriptors)")
       ->capture_default_str();
   command.add_option("--features", features, "Features kept per frame (new ones detected below this)")
@@ -46,6 +58,8 @@ RunOptions OdometrySettings::runOptions() const {
   RunOptions options;
   OdometryOptions& odometry = options.odometry;
   odometry.windowSize = window;
+  odometry.anchorKeyframes = anchors;
+  odometry.scaleDriftPerKeyframe = scaleDrift;
   odometry.solver = solver;
   odometry.seed = seed;
   if (rigid)

@@ -19,6 +19,8 @@ struct OdometrySettings {
   std::string constraint = "log_barrier";
   bool rigid = false;
   int window = 15;
+  int anchors = 5;
+  double scaleDrift = 3e-4;
   std::string detector = "gftt";
   int features = 300;
   double band_px = 8.0;

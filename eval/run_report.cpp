@@ -7,6 +7,7 @@
 #include "eval/trajectory_association.h"
 #include "eval/trajectory_metrics.h"
 #include "eval/trajectory_plots.h"
+#include "frontend/pose_file.h"
 
 namespace lrsvo {
 namespace {
@@ -61,7 +62,9 @@ RunReport writeRunReport(const std::filesystem::path& outDir, const RunResult& r
   } else if (run.trajectory.size() < 2) {
     report.warning = "fewer than two tracked frames: no trajectory metrics";
   } else {
-    const AssociatedTrajectories matched = associateByTime(run.trajectory, truthTrajectory(truth));
+    const Trajectory truthPoses = truthTrajectory(truth);
+    if (!outDir.empty()) writeTumTrajectory(outDir / "groundtruth.tum", truthPoses);
+    const AssociatedTrajectories matched = associateByTime(run.trajectory, truthPoses);
     if (matched.estimate.size() < 2) {
       report.warning = "the estimate's times match no ground truth: no trajectory metrics";
     } else {
@@ -70,8 +73,8 @@ RunReport writeRunReport(const std::filesystem::path& outDir, const RunResult& r
       trajectory["frames_matched"] = trajectory["frames"];
       trajectory.erase("frames");
       report.metrics.update(trajectory);
+      if (!outDir.empty()) writeTrajectoryTable(outDir, matched, metrics, true);
       if (plots && !outDir.empty()) {
-        writeTrajectoryTable(outDir, matched, metrics, true);
         const TrajectoryPlots drawn = plotTrajectory(outDir);
         report.plots = drawn.files;
         report.warning = drawn.warning;

@@ -1,10 +1,12 @@
 #include "frontend/bundle_graph.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
 
 #include "edges/edge_centre_distance.h"
+#include "edges/edge_scale_prior.h"
 #include "graph/error.h"
 #include "graph/robust_kernel.h"
 
@@ -115,6 +117,52 @@ int BundleGraph::addObservations(int frame, const FrameObservations& observation
     ++added;
   }
   return added;
+}
+
+void BundleGraph::addHeldViewScale(double sigma) {
+  if (heldScale_) throw Error("bundle graph: the held views' scale was already added");
+  if (!(sigma >= 0.0)) throw Error("bundle graph: the held views' scale sigma must not be negative");
+  heldScale_ = graph_.addVertex(std::make_unique<VertexScale>(nextId_++, 1.0));
+  if (sigma == 0.0) return;
+  auto prior = std::make_unique<EdgeScalePrior>();
+  prior->setVertex(0, heldScale_);
+  prior->setMeasurement(Eigen::Matrix<double, 1, 1>(1.0));
+  prior->setInformation(Eigen::Matrix<double, 1, 1>(1.0 / (sigma * sigma)));
+  graph_.addEdge(std::move(prior));
+}
+
+int BundleGraph::addHeldView(const Eigen::Isometry3d& cameraFromWorld, const Eigen::Vector3d& origin,
+                             const FrameObservations& observations) {
+  if (!heldScale_) throw Error("bundle graph: addHeldViewScale must come before addHeldView");
+  int added = 0;
+  for (const Observation& observation : observations.observations) {
+    auto point = points_.find(observation.track);
+    if (observation.camera != 0 || point == points_.end()) continue;
+    auto edge = std::make_unique<EdgeProjectHeldView>(rig_.cameras[0].intrinsics, cameraFromWorld, origin);
+    edge->setVertex(0, point->second);
+    edge->setVertex(1, heldScale_);
+    edge->setMeasurement(observation.pixel);
+    edge->setInformation(Eigen::Matrix2d::Identity() / (options_.sigma_px * options_.sigma_px));
+    if (!options_.robustKernel.empty())
+      edge->setRobustKernel(makeRobustKernel(options_.robustKernel, options_.robustKernelDelta));
+    graph_.addEdge(std::move(edge));
+    ++added;
+  }
+  return added;
+}
+
+std::vector<HeldCoordinate> BundleGraph::scaleGaugeCoordinates(const Bounds* enforced, double activeFraction) const {
+  std::vector<HeldCoordinate> held;
+  for (const VertexStereoExtrinsic* extrinsic : extrinsics_)
+    if (extrinsic && !extrinsic->fixed())
+      for (int i = 0; i < 3; ++i) held.push_back({extrinsic, i});
+  if (!enforced) return held;
+  for (const Bounds::Bound& bound : enforced->all()) {
+    const double value = Bounds::value(bound);
+    const bool atBound = std::min(value - bound.lower, bound.upper - value) <= activeFraction * bound.halfWidth();
+    if (bound.index >= 3 && atBound) held.push_back({bound.vertex, bound.index});
+  }
+  return held;
 }
 
 Bounds BundleGraph::extrinsicBounds() const {

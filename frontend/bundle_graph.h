@@ -6,11 +6,13 @@
 
 #include "constraints/bounds.h"
 #include "edges/edge_project_base.h"
+#include "edges/edge_project_held_view.h"
 #include "edges/edge_project_secondary.h"
 #include "frontend/observations.h"
 #include "frontend/rig.h"
 #include "frontend/sparse_map.h"
 #include "graph/graph.h"
+#include "graph/marginal_covariance.h"
 #include "vertices/vertex_point3.h"
 #include "vertices/vertex_pose.h"
 #include "vertices/vertex_scale.h"
@@ -56,6 +58,23 @@ class BundleGraph {
   // observations always, secondary ones when that camera's extrinsic was
   // added. Returns the number of edges added.
   int addObservations(int frame, const FrameObservations& observations);
+  // The scale s every held view's centre slides with, starting at 1, with a
+  // prior s ~ N(1, sigma^2) when sigma > 0. Call once, before addHeldView.
+  void addHeldViewScale(double sigma);
+  // A held view (EdgeProjectHeldView): base observations of mapped tracks from
+  // a fixed orientation, the centre sliding with the held views' scale about
+  // `origin`. Not counted in the RMS or projection errors. Returns the number
+  // of edges added.
+  int addHeldView(const Eigen::Isometry3d& cameraFromWorld, const Eigen::Vector3d& origin,
+                  const FrameObservations& observations);
+  // The held views' scale s, or nullptr before addHeldViewScale.
+  VertexScale* heldViewScale() const { return heldScale_; }
+  // What a marginal covariance of the map's scale must condition on: the free
+  // extrinsics' centres c (scaling the map and c together changes no
+  // projection, so only c's bounds fix that gauge) and, of `enforced` (the
+  // bounds the solve kept, or none), the angles within `activeFraction` of
+  // their half-width from a bound, which the bound rather than the data holds.
+  std::vector<HeldCoordinate> scaleGaugeCoordinates(const Bounds* enforced, double activeFraction) const;
   // The rig's box around calibration on every (free) extrinsic vertex.
   Bounds extrinsicBounds() const;
 
@@ -81,6 +100,7 @@ class BundleGraph {
   std::map<int, VertexPoint3*> points_;
   std::vector<VertexStereoExtrinsic*> extrinsics_;  // [k - 1], nullptr when not added
   VertexScale* scale_ = nullptr;
+  VertexScale* heldScale_ = nullptr;  // of the held views (addHeldViewScale)
   // One per projection edge: which observation it measures and how to read
   // its residual (the three edge types share no residual interface).
   struct Projection {

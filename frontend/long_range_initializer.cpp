@@ -39,12 +39,7 @@ void validate(const LongRangeInitializerOptions& o) {
 // distance prior's own spread, which the product cancels. Conditioned on the
 // extrinsic centres and on angles at a bound (see the class comment).
 double scaleRelativeStd(BundleGraph& bundle, const Bounds& bounds, int lastPose) {
-  std::vector<HeldCoordinate> held;
-  for (const Bounds::Bound& bound : bounds.all()) {
-    const double value = Bounds::value(bound);
-    const bool atBound = std::min(value - bound.lower, bound.upper - value) <= kActiveBoundFraction * bound.halfWidth();
-    if (bound.index < 3 || atBound) held.push_back({bound.vertex, bound.index});
-  }
+  const std::vector<HeldCoordinate> held = bundle.scaleGaugeCoordinates(&bounds, kActiveBoundFraction);
   const VertexPose& last = *bundle.pose(lastPose);
   const Eigen::MatrixXd covariance = marginalCovariance(bundle.graph(), {bundle.scale(), &last}, held);
   // d(kappa L) / (kappa L) = dkappa / kappa + dL / L; pose 0 is fixed and the

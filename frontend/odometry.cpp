@@ -89,7 +89,7 @@ std::vector<FrameEstimate> Odometry::initialize() {
   for (std::size_t i = 0; i < sampled.size(); ++i)
     keyframes.push_back({pendingIndices_[i * static_cast<std::size_t>(step)],
                          result.cameraFromWorld[i] * segmentFromWorld, sampled[i]});
-  window_.reset(keyframes, std::move(points), result.extrinsics);
+  window_.reset(keyframes, std::move(points), result.extrinsics, result.kappaRelativeStd);
   ++segment_;
   tracking_ = true;
   framesSinceKeyframe_ = 0;

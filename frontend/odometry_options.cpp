@@ -30,6 +30,8 @@ void OdometryOptions::validate() const {
   };
   require(windowSize >= 3, "windowSize must be at least 3, got " + std::to_string(windowSize));
   require(fixedPoses >= 1 && fixedPoses < windowSize, "fixedPoses must be in [1, windowSize)");
+  require(anchorKeyframes >= 0, "anchorKeyframes must not be negative");
+  require(scaleDriftPerKeyframe >= 0.0, "scaleDriftPerKeyframe must not be negative");
   require(initializer.frames <= windowSize, "the initialiser's frames must fit the window");
   require(maxIterations >= 1, "maxIterations must be positive");
   require(outlierThreshold_px > 0.0, "outlierThreshold_px must be positive");

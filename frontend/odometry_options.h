@@ -28,6 +28,21 @@ struct OdometryOptions {
   // shared S one bundle adjustment refines (paper: 12-15 stereo pairs).
   int windowSize = 15;
   int fixedPoses = 1;  // oldest poses of the window held (the gauge)
+  // Retired keyframes kept in each adjustment as held views: their base
+  // observations of the window's points still count, from fixed orientations,
+  // their centres sliding with one shared scale about the oldest keyframe
+  // (EdgeProjectHeldView). At long range a window held by its oldest pose alone
+  // can tilt its map almost for free (the bas-relief ambiguity), moving its
+  // newest keyframe by metres; the held views stop that, and leave the scale
+  // to the stereo observations. 0: the window alone.
+  int anchorKeyframes = 5;
+  // The scale the held views carry is a running estimate over many windows:
+  // each adjustment holds it with a prior N(1, P + q^2), P its relative
+  // variance so far (from the initialiser's, then each window's marginal) and
+  // q this drift allowance per keyframe. At 100 m and more one window's stereo
+  // barely measures scale (its disparity is smaller than S's rotation box), so
+  // without the prior the scale would jump. 0: no drift allowed.
+  double scaleDriftPerKeyframe = 3e-4;
   ExtrinsicMode extrinsicMode = ExtrinsicMode::kBounded;
   std::string constraintMethod = "log_barrier";  // any name of Registry<ConstraintMethod>, for kBounded
   // One barrier round: each window starts from the last window's S, already

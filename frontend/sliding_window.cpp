@@ -1,11 +1,14 @@
 #include "frontend/sliding_window.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <unordered_map>
 #include <utility>
 
 #include "frontend/bundle_graph.h"
+#include "graph/error.h"
+#include "graph/marginal_covariance.h"
 #include "graph/optimizer.h"
 #include "graph/solver_options.h"
 
@@ -21,13 +24,38 @@ std::unordered_map<int, int> baseViewCounts(const std::deque<Keyframe>& keyframe
   return counts;
 }
 
+// An angle this close to a bound (as a fraction of the half-width) is held by
+// it when the scale's variance is computed.
+constexpr double kActiveBoundFraction = 0.02;
+
+// The relative variance of the scale the held views carry, after an
+// adjustment that held it with a prior of `priorVariance`. The window's
+// marginal counts every observation in it, but each keyframe stays in the
+// window for windowSize adjustments: only 1 / windowSize of the information
+// it adds over the prior is new.
+double carriedScaleVariance(BundleGraph& bundle, const Bounds* enforced, double priorVariance, int windowSize) {
+  const VertexScale* scale = bundle.heldViewScale();
+  double windowVariance = priorVariance;
+  try {
+    windowVariance = marginalCovariance(bundle.graph(), {scale}, bundle.scaleGaugeCoordinates(enforced,
+                                                                                                kActiveBoundFraction))(0, 0);
+  } catch (const Error&) {
+    return priorVariance;  // the information is singular: nothing learnt
+  }
+  windowVariance /= scale->kappa() * scale->kappa();
+  const double added = std::max(0.0, 1.0 / windowVariance - 1.0 / priorVariance);
+  return 1.0 / (1.0 / priorVariance + added / windowSize);
+}
+
 }  // namespace
 
 SlidingWindow::SlidingWindow(const Rig& rig, const OdometryOptions& options) : rig_(rig), options_(options) {}
 
 void SlidingWindow::reset(std::vector<Keyframe> keyframes, std::map<int, Eigen::Vector3d> points,
-                          std::vector<Vector6> extrinsics) {
+                          std::vector<Vector6> extrinsics, double scaleRelativeStd) {
+  scaleVariance_ = scaleRelativeStd * scaleRelativeStd;
   keyframes_.assign(std::make_move_iterator(keyframes.begin()), std::make_move_iterator(keyframes.end()));
+  anchors_.clear();
   points_ = std::move(points);
   extrinsics_ = std::move(extrinsics);
   if (options_.extrinsicMode == ExtrinsicMode::kRigid) extrinsics_ = rig_.extrinsics;
@@ -62,14 +90,14 @@ int SlidingWindow::triangulateNewTracks() {
   return added;
 }
 
-SolverSummary SlidingWindow::solve(BundleGraph& bundle) const {
+SolverSummary SlidingWindow::solve(BundleGraph& bundle, const Bounds& bounds) const {
   SolverOptions solver = SolverOptions::fromName(options_.solver);
   solver.maxIterations = options_.maxIterations;
   solver.functionTolerance = options_.functionTolerance;
   solver.threads = options_.threads;
   switch (options_.extrinsicMode) {
     case ExtrinsicMode::kBounded:
-      return optimizeWithBounds(bundle.graph(), solver, bundle.extrinsicBounds(), options_.constraintMethod,
+      return optimizeWithBounds(bundle.graph(), solver, bounds, options_.constraintMethod,
                                 options_.constraintSettings);
     case ExtrinsicMode::kFree:
     case ExtrinsicMode::kRigid: break;
@@ -93,14 +121,29 @@ WindowAdjustment SlidingWindow::adjust() {
   for (int k = 1; k <= rig_.secondaryCount(); ++k) bundle.addExtrinsic(k, extrinsics_[k - 1], extrinsicFixed);
   for (std::size_t i = 0; i < keyframes_.size(); ++i)
     bundle.addObservations(static_cast<int>(i), keyframes_[i].observations);
+  // Held views scale about the oldest keyframe's centre, which is held too.
+  const Eigen::Vector3d origin = keyframes_.front().cameraFromWorld.inverse().translation();
+  const double priorVariance = scaleVariance_ + options_.scaleDriftPerKeyframe * options_.scaleDriftPerKeyframe;
+  if (!anchors_.empty()) bundle.addHeldViewScale(std::sqrt(priorVariance));
+  for (const Keyframe& anchor : anchors_) bundle.addHeldView(anchor.cameraFromWorld, origin, anchor.observations);
 
   WindowAdjustment adjustment;
-  adjustment.summary = solve(bundle);
+  const Bounds bounds = bundle.extrinsicBounds();
+  adjustment.summary = solve(bundle, bounds);
   adjustment.rmsError_px = bundle.rmsReprojectionError_px();
   const SparseMap solved = bundle.map();
   for (std::size_t i = 0; i < keyframes_.size(); ++i) keyframes_[i].cameraFromWorld = solved.cameraFromWorld[i];
   for (const auto& [track, point] : solved.points) points_[track] = point;
   extrinsics_ = bundle.extrinsics();
+  if (!anchors_.empty()) {
+    const bool bounded = options_.extrinsicMode == ExtrinsicMode::kBounded;
+    scaleVariance_ = carriedScaleVariance(bundle, bounded ? &bounds : nullptr, priorVariance, options_.windowSize);
+  }
+  const double heldScale = anchors_.empty() ? 1.0 : bundle.heldViewScale()->kappa();
+  for (Keyframe& anchor : anchors_) {
+    const Eigen::Vector3d centre = origin + heldScale * (anchor.cameraFromWorld.inverse().translation() - origin);
+    anchor.cameraFromWorld.translation() = -(anchor.cameraFromWorld.linear() * centre);
+  }
 
   // Outliers: a base-camera outlier condemns the track (a wrong temporal
   // match); a secondary one only that observation (a wrong stereo match).
@@ -122,6 +165,8 @@ WindowAdjustment SlidingWindow::adjust() {
     adjustment.removedObservations += static_cast<int>(before - observations.size());
   }
   for (int track : rejected) points_.erase(track);
+  for (Keyframe& anchor : anchors_)
+    std::erase_if(anchor.observations.observations, [&](const Observation& o) { return rejected.count(o.track); });
   adjustment.rejectedTracks.assign(rejected.begin(), rejected.end());
   return adjustment;
 }
@@ -129,7 +174,11 @@ WindowAdjustment SlidingWindow::adjust() {
 void SlidingWindow::retire() {
   const auto windowSize = static_cast<std::size_t>(options_.windowSize);
   if (keyframes_.size() <= windowSize) return;
-  while (keyframes_.size() > windowSize) keyframes_.pop_front();
+  while (keyframes_.size() > windowSize) {
+    anchors_.push_back(std::move(keyframes_.front()));
+    keyframes_.pop_front();
+  }
+  while (anchors_.size() > static_cast<std::size_t>(options_.anchorKeyframes)) anchors_.pop_front();
   const std::unordered_map<int, int> counts = baseViewCounts(keyframes_);
   std::erase_if(points_, [&](const auto& entry) { return !counts.count(entry.first); });
 }
@@ -137,8 +186,11 @@ void SlidingWindow::retire() {
 void SlidingWindow::removeTracks(const std::vector<int>& tracks) {
   const std::set<int> gone(tracks.begin(), tracks.end());
   for (int track : gone) points_.erase(track);
-  for (Keyframe& keyframe : keyframes_)
-    std::erase_if(keyframe.observations.observations, [&](const Observation& o) { return gone.count(o.track); });
+  for (auto* frames : {&anchors_, &keyframes_})
+    for (Keyframe& keyframe : *frames)
+      std::erase_if(keyframe.observations.observations, [&](const Observation& o) { return gone.count(o.track); });
 }
+
+double SlidingWindow::scaleRelativeStd() const { return std::sqrt(scaleVariance_); }
 
 }  // namespace lrsvo

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "constraints/bounds.h"
 #include "frontend/observations.h"
 #include "frontend/odometry_options.h"
 #include "frontend/rig.h"
@@ -38,8 +39,10 @@ class SlidingWindow {
 
   SlidingWindow(const Rig& rig, const OdometryOptions& options);
 
-  // Starts over from an initialised map (its keyframes oldest first).
-  void reset(std::vector<Keyframe> keyframes, std::map<int, Eigen::Vector3d> points, std::vector<Vector6> extrinsics);
+  // Starts over from an initialised map (its keyframes oldest first) whose
+  // scale has this relative standard deviation.
+  void reset(std::vector<Keyframe> keyframes, std::map<int, Eigen::Vector3d> points, std::vector<Vector6> extrinsics,
+             double scaleRelativeStd = 0.05);
   void addKeyframe(Keyframe keyframe);
   // Triangulates every unmapped track the base camera saw in at least
   // minTriangulationViews keyframes (with its secondary views as further
@@ -47,25 +50,32 @@ class SlidingWindow {
   int triangulateNewTracks();
   // Bundle adjustment of the window, then removal of outlying observations.
   WindowAdjustment adjust();
-  // Drops the oldest keyframes beyond windowSize, and the points no kept keyframe observes.
+  // Drops the oldest keyframes beyond windowSize (they become held anchors),
+  // and the points no kept keyframe observes.
   void retire();
   // Forgets tracks (a pose estimate rejected them): their points and observations.
   void removeTracks(const std::vector<int>& tracks);
 
   const std::deque<Keyframe>& keyframes() const { return keyframes_; }
+  // The most recently retired keyframes, held in each adjustment (OdometryOptions::anchorKeyframes).
+  const std::deque<Keyframe>& anchors() const { return anchors_; }
   const std::map<int, Eigen::Vector3d>& points() const { return points_; }
   const std::vector<Vector6>& extrinsics() const { return extrinsics_; }
+  // The relative standard deviation of the map's scale the window carries.
+  double scaleRelativeStd() const;
   // Camera k's pose (camera-from-world) for a base pose through the current S.
   Eigen::Isometry3d cameraFromWorld(const Eigen::Isometry3d& baseFromWorld, int camera) const;
 
  private:
-  SolverSummary solve(class BundleGraph& bundle) const;
+  SolverSummary solve(class BundleGraph& bundle, const Bounds& bounds) const;
 
   const Rig& rig_;
   const OdometryOptions& options_;
   std::deque<Keyframe> keyframes_;
+  std::deque<Keyframe> anchors_;  // oldest first
   std::map<int, Eigen::Vector3d> points_;
   std::vector<Vector6> extrinsics_;  // [k - 1]
+  double scaleVariance_ = 0.0;       // relative, of the map's scale
 };
 
 }  // namespace lrsvo

@@ -11,12 +11,13 @@
 namespace lrsvo {
 namespace {
 
-// A straight, level flight at 20 m/s and 30 Hz, 100 m above farmland (no
-// trees), the rig flexed by a constant offset inside its bounds (pitch 4 mrad
-// = 6.7 px) plus the default slow drift and vibration, ~300 features a frame.
-SimulatedSequence odometryFlight(double length_m, std::uint64_t seed) {
+// A straight, level flight at 20 m/s and 30 Hz, 100 m (or `altitude_m`) above
+// farmland (no trees), the rig flexed by a constant offset inside its bounds
+// (pitch 4 mrad = 6.7 px) plus the default slow drift and vibration, ~300
+// features a frame.
+SimulatedSequence odometryFlight(double length_m, std::uint64_t seed, double altitude_m = 100.0) {
   FeatureSimulationOptions options;
-  options.flight.altitude_m = 100.0;
+  options.flight.altitude_m = altitude_m;
   options.flight.speed_m_s = 20.0;
   options.flight.legs = {{FlightLeg::Kind::Straight, length_m}};
   options.flight.attitudeNoise_rad = 0.01;
@@ -54,6 +55,22 @@ double finalErrorFraction(const std::vector<FrameEstimate>& estimates, const Sim
       centreInFirst(sequence.trueCameraFromWorld[last->frame], sequence.trueCameraFromWorld[first->frame]);
   const Eigen::Vector3d estimate = centreInFirst(last->cameraFromWorld, first->cameraFromWorld);
   return (estimate - truth).norm() / truth.norm();
+}
+
+// The largest error of one frame-to-frame step of the camera centre, in metres.
+double largestStepError(const std::vector<FrameEstimate>& estimates, const SimulatedSequence& sequence) {
+  double largest = 0.0;
+  for (std::size_t i = 1; i < estimates.size(); ++i) {
+    if (!estimates[i].tracked || !estimates[i - 1].tracked) continue;
+    auto centre = [](const Eigen::Isometry3d& cameraFromWorld) -> Eigen::Vector3d {
+      return cameraFromWorld.inverse().translation();
+    };
+    const Eigen::Vector3d step = centre(estimates[i].cameraFromWorld) - centre(estimates[i - 1].cameraFromWorld);
+    const Eigen::Vector3d trueStep =
+        centre(sequence.trueCameraFromWorld[i]) - centre(sequence.trueCameraFromWorld[i - 1]);
+    largest = std::max(largest, std::abs(step.norm() - trueStep.norm()));
+  }
+  return largest;
 }
 
 TEST(KeyframePolicy, MotionSharedTracksAndGap) {
@@ -113,6 +130,31 @@ TEST(OdometryFlight, BoundedExtrinsicTracksAFlexedRigWhereRigidStereoFails) {
   options.extrinsicMode = ExtrinsicMode::kRigid;
   const double rigidError = finalErrorFraction(runOver(sequence.frames, sequence.rig, options), sequence);
   EXPECT_GT(rigidError, 3.0 * boundedError);
+}
+
+// At 120 m a window held by its oldest pose alone barely measures its scale
+// (0.7 m of baseline: 7.5 px of disparity against S's +-12.8 px rotation box),
+// so window adjustments can move the newest keyframe by metres along the
+// track. Retired keyframes held in the adjustment, with the carried scale's
+// prior, keep the worst step and the worst end point of four flights closer
+// to the truth.
+TEST(OdometryFlight, HeldKeyframesStopTheWindowJumpingAtLongRange) {
+  OdometryOptions held;
+  OdometryOptions alone;
+  alone.anchorKeyframes = 0;
+  double heldJump = 0.0, aloneJump = 0.0, heldEnd = 0.0, aloneEnd = 0.0;
+  for (std::uint64_t seed : {8, 9, 10, 11}) {
+    const SimulatedSequence sequence = odometryFlight(200.0, seed, 120.0);
+    const std::vector<FrameEstimate> withHeld = runOver(sequence.frames, sequence.rig, held);
+    const std::vector<FrameEstimate> windowAlone = runOver(sequence.frames, sequence.rig, alone);
+    heldJump = std::max(heldJump, largestStepError(withHeld, sequence));
+    aloneJump = std::max(aloneJump, largestStepError(windowAlone, sequence));
+    heldEnd = std::max(heldEnd, finalErrorFraction(withHeld, sequence));
+    aloneEnd = std::max(aloneEnd, finalErrorFraction(windowAlone, sequence));
+  }
+  EXPECT_LT(heldJump, 0.5 * aloneJump) << "held " << heldJump << " m, window alone " << aloneJump << " m";
+  EXPECT_LT(heldEnd, 0.5 * aloneEnd) << "held " << heldEnd << ", window alone " << aloneEnd;
+  EXPECT_LT(heldEnd, 0.02);
 }
 
 // Frames with nothing in them lose tracking; the odometry initialises afresh
@@ -181,6 +223,37 @@ TEST(SlidingWindowTest, RemovesAWrongTrackAndReportsIt) {
             adjustment.rejectedTracks.end());
   EXPECT_EQ(window.points().count(wrongTrack), 0u);
   EXPECT_LT(adjustment.rejectedTracks.size(), 5u);  // the rest of the window is sound
+}
+
+// Keyframes leaving the window stay as held views (at most anchorKeyframes,
+// the latest), and the adjustments they join narrow the carried scale's
+// uncertainty from the initialiser's.
+TEST(SlidingWindowTest, RetiredKeyframesAreHeldAndNarrowTheScale) {
+  const SimulatedSequence sequence = odometryFlight(80.0, 9);
+  OdometryOptions options;
+  options.anchorKeyframes = 2;
+  SlidingWindow window(sequence.rig, options);
+  std::vector<Keyframe> keyframes;
+  for (int i = 0; i < options.windowSize; ++i)
+    keyframes.push_back({3 * i, sequence.trueCameraFromWorld[3 * i], sequence.frames[3 * i]});
+  window.reset(keyframes, {}, sequence.trueExtrinsics[0], 0.05);
+  ASSERT_GT(window.triangulateNewTracks(), 100);
+  window.adjust();
+  window.retire();
+  EXPECT_TRUE(window.anchors().empty());
+  EXPECT_DOUBLE_EQ(window.scaleRelativeStd(), 0.05);  // no held view yet: nothing carried
+  for (int i = options.windowSize; i < options.windowSize + 3; ++i) {
+    window.addKeyframe({3 * i, sequence.trueCameraFromWorld[3 * i], sequence.frames[3 * i]});
+    window.triangulateNewTracks();
+    window.adjust();
+    window.retire();
+  }
+  ASSERT_EQ(window.anchors().size(), 2u);
+  EXPECT_EQ(window.anchors().front().frame, 3);
+  EXPECT_EQ(window.anchors().back().frame, 6);
+  EXPECT_EQ(window.keyframes().front().frame, 9);
+  EXPECT_LT(window.scaleRelativeStd(), 0.05);
+  EXPECT_GT(window.scaleRelativeStd(), 0.0);
 }
 
 }  // namespace

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <Eigen/Geometry>
+
+#include "edges/pinhole.h"
+#include "graph/base_edge.h"
+#include "vertices/vertex_point3.h"
+#include "vertices/vertex_scale.h"
+
+namespace lrsvo {
+
+// A base-camera observation from a held view (a keyframe retired from the
+// sliding window) whose orientation is fixed and whose centre slides with the
+// map's scale s about a fixed origin: C = origin + s * offset,
+// x = pi(K R (X - C)). The held views keep the window's map from tilting (the
+// long-range bas-relief ambiguity) without also fixing its scale, which the
+// stereo observations keep estimating. Vertices: the point, and s.
+class EdgeProjectHeldView : public BaseEdge<2, VertexPoint3, VertexScale> {
+ public:
+  static constexpr const char* kTypeTag = "PROJECT_HELD_VIEW";
+  EdgeProjectHeldView() = default;
+  // `cameraFromWorld` is the held view's pose at s = 1.
+  EdgeProjectHeldView(const PinholeIntrinsics& intrinsics, const Eigen::Isometry3d& cameraFromWorld,
+                      const Eigen::Vector3d& origin);
+
+  // The held view's pose at scale s.
+  Eigen::Isometry3d cameraFromWorld(double s) const;
+  const char* typeTag() const override { return kTypeTag; }
+  void computeResidual(Residual& residual) const override;
+  void computeJacobians() override;
+
+ protected:
+  void writeParameters(std::ostream& out) const override;
+  void readParameters(std::istream& in) override;
+
+ private:
+  PinholeIntrinsics intrinsics_;
+  Eigen::Quaterniond rotation_ = Eigen::Quaterniond::Identity();  // camera from world
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d offset_ = Eigen::Vector3d::Zero();  // the centre at s = 1, minus origin
+};
+
+}  // namespace lrsvo
