@@ -1,6 +1,9 @@
 // `lrsvo bench run`: the odometry's own speed on 1280x960 stereo images, per
 // stage, and its memory as a run grows (it must stay flat). Frames are
-// rendered before they reach the odometry; rendering is not timed.
+// rendered before they reach the odometry; rendering is not timed. With
+// --feature-level a sim: flight's observations go straight to the odometry
+// (no images): the back end's speed and memory over thousands of frames in
+// minutes rather than hours of rendering.
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -24,6 +27,7 @@ namespace {
 struct BenchRunOptions {
   std::string source = "sim:paper";
   std::vector<int> checkpoints = {1000, 5000};
+  bool featureLevel = false;
   OdometrySettings settings;
 };
 
@@ -56,28 +60,41 @@ void printStages(const RunTotals& t) {
 void benchRun(BenchRunOptions o) {
   std::sort(o.checkpoints.begin(), o.checkpoints.end());
   if (o.checkpoints.empty() || o.checkpoints.front() < 1) throw Error("bench run: checkpoints must be positive");
-  std::unique_ptr<FrameSource> source = openSource(o.source);
+  std::unique_ptr<FrameSource> source;
+  std::optional<FeatureLevelFlight> flight;
+  if (o.featureLevel)
+    flight = simulateFeatureLevel(o.source);
+  else
+    source = openSource(o.source);
+  const std::string name = flight ? flight->name : source->name();
+  const int frameCount = flight ? static_cast<int>(flight->frames.size()) : source->frameCount();
   const int last = o.checkpoints.back();
-  if (source->frameCount() >= 0 && source->frameCount() < last)
-    throw Error("bench run: " + source->name() + " has " + std::to_string(source->frameCount()) +
-                " frames, fewer than the last checkpoint " + std::to_string(last));
+  if (frameCount >= 0 && frameCount < last)
+    throw Error("bench run: " + name + " has " + std::to_string(frameCount) + " frames, fewer than the last checkpoint " +
+                std::to_string(last));
   const RunOptions options = o.settings.runOptions();
-  OdometryPipeline pipeline(*source, options);
-  const Camera& camera = source->rig().cameras[0];
-  std::printf("lrsvo bench run: %s, %dx%d, window %d, S %s; memory and speed at frames", source->name().c_str(),
-              camera.width, camera.height, options.odometry.windowSize,
-              extrinsicModeName(options.odometry.extrinsicMode));
+  const Rig& rig = flight ? flight->rig : source->rig();
+  OdometryPipeline pipeline = flight ? OdometryPipeline(rig, std::vector<LensDistortion>(rig.cameras.size()),
+                                                        flight->truth, options)
+                                     : OdometryPipeline(*source, options);
+  const Camera& camera = rig.cameras[0];
+  std::printf("lrsvo bench run: %s, %dx%d, window %d, S %s; memory and speed at frames", name.c_str(), camera.width,
+              camera.height, options.odometry.windowSize, extrinsicModeName(options.odometry.extrinsicMode));
   for (int c : o.checkpoints) std::printf(" %d", c);
   std::printf("\n");
   std::printf("  resident memory before the first frame: %.1f MiB\n", residentMiB());
   std::size_t next = 0;
   double sourceSeconds = 0.0;
   for (int frame = 1; frame <= last; ++frame) {
-    bench::Stopwatch render;
-    std::optional<StereoFrame> images = source->next();
-    sourceSeconds += render.seconds();
-    if (!images) break;
-    pipeline.process(*images);
+    if (flight) {
+      pipeline.process(flight->frames[static_cast<std::size_t>(frame - 1)]);
+    } else {
+      bench::Stopwatch render;
+      std::optional<StereoFrame> images = source->next();
+      sourceSeconds += render.seconds();
+      if (!images) break;
+      pipeline.process(*images);
+    }
     if (frame % 100 == 0) std::fprintf(stderr, "\rframe %d/%d  %.1f fps   ", frame, last, pipeline.totals().fps());
     if (next < o.checkpoints.size() && frame == o.checkpoints[next]) {
       RunTotals totals = pipeline.totals();
@@ -102,6 +119,8 @@ void addBenchRun(CLI::App& app) {
                    "Frame counts at which to report speed and memory (e.g. 1000,5000)")
       ->delimiter(',')
       ->capture_default_str();
+  command->add_flag("--feature-level", options->featureLevel,
+                    "A sim: flight's observations straight into the odometry, no images (the back end alone)");
   options->settings.addOptions(*command);
   command->callback([options] { benchRun(*options); });
 }

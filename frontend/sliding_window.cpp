@@ -70,19 +70,27 @@ Eigen::Isometry3d SlidingWindow::cameraFromWorld(const Eigen::Isometry3d& baseFr
 }
 
 int SlidingWindow::triangulateNewTracks() {
-  std::unordered_map<int, std::vector<TriangulationView>> views;
+  // Per track: every view, and the base camera's alone.
+  std::unordered_map<int, std::vector<TriangulationView>> views, baseViews;
   const std::unordered_map<int, int> counts = baseViewCounts(keyframes_);
   for (const Keyframe& keyframe : keyframes_)
     for (const Observation& observation : keyframe.observations.observations) {
       if (points_.count(observation.track)) continue;
       auto count = counts.find(observation.track);
       if (count == counts.end() || count->second < options_.minTriangulationViews) continue;
-      views[observation.track].push_back({cameraFromWorld(keyframe.cameraFromWorld, observation.camera),
-                                          rig_.cameras[observation.camera].intrinsics, observation.pixel});
+      const TriangulationView view{cameraFromWorld(keyframe.cameraFromWorld, observation.camera),
+                                   rig_.cameras[observation.camera].intrinsics, observation.pixel};
+      views[observation.track].push_back(view);
+      if (observation.camera == 0) baseViews[observation.track].push_back(view);
     }
   int added = 0;
   for (const auto& [track, trackViews] : views) {
-    const TriangulationResult result = triangulate(trackViews, options_.triangulation);
+    TriangulationResult result = triangulate(trackViews, options_.triangulation);
+    // The secondary rays go through the current S: while S lags a fast
+    // deformation they disagree with the base views, and the track would go
+    // unmapped. The base camera's own views still place it.
+    if (!result.valid && trackViews.size() > baseViews[track].size())
+      result = triangulate(baseViews[track], options_.triangulation);
     if (!result.valid) continue;
     points_[track] = result.point;
     ++added;
