@@ -361,7 +361,7 @@ std::filesystem::path writeKittiSequence() {
                                             "1 0 0 0 0 1 0 0 0 0 1 1.6\n";
   for (int frame = 0; frame < 3; ++frame)
     for (int camera = 0; camera < 2; ++camera) {
-      char name[32];
+      char name[48];
       std::snprintf(name, sizeof name, "image_%d/%06d.png", camera, frame);
       cv::imwrite((directory / name).string(), cv::Mat(80, 120, CV_8UC1, cv::Scalar(10 * frame + camera)));
     }
