@@ -123,7 +123,10 @@ void BundleGraph::addHeldViewScale(double sigma) {
   if (heldScale_) throw Error("bundle graph: the held views' scale was already added");
   if (!(sigma >= 0.0)) throw Error("bundle graph: the held views' scale sigma must not be negative");
   heldScale_ = graph_.addVertex(std::make_unique<VertexScale>(nextId_++, 1.0));
-  if (sigma == 0.0) return;
+  if (sigma == 0.0) {
+    heldScale_->setFixed(true);
+    return;
+  }
   auto prior = std::make_unique<EdgeScalePrior>();
   prior->setVertex(0, heldScale_);
   prior->setMeasurement(Eigen::Matrix<double, 1, 1>(1.0));

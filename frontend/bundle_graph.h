@@ -59,7 +59,7 @@ class BundleGraph {
   // added. Returns the number of edges added.
   int addObservations(int frame, const FrameObservations& observations);
   // The scale s every held view's centre slides with, starting at 1, with a
-  // prior s ~ N(1, sigma^2) when sigma > 0. Call once, before addHeldView.
+  // prior s ~ N(1, sigma^2); sigma 0 holds s at 1. Call once, before addHeldView.
   void addHeldViewScale(double sigma);
   // A held view (EdgeProjectHeldView): base observations of mapped tracks from
   // a fixed orientation, the centre sliding with the held views' scale about

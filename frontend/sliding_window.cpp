@@ -40,7 +40,7 @@ double carriedScaleVariance(BundleGraph& bundle, const Bounds* enforced, double 
     windowVariance = marginalCovariance(bundle.graph(), {scale}, bundle.scaleGaugeCoordinates(enforced,
                                                                                                 kActiveBoundFraction))(0, 0);
   } catch (const Error&) {
-    return priorVariance;  // the information is singular: nothing learnt
+    return priorVariance;  // s held, or its information singular: nothing learnt
   }
   windowVariance /= scale->kappa() * scale->kappa();
   const double added = std::max(0.0, 1.0 / windowVariance - 1.0 / priorVariance);

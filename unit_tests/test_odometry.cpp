@@ -3,9 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include "frontend/bundle_graph.h"
 #include "frontend/keyframe_policy.h"
 #include "frontend/odometry.h"
 #include "frontend/sliding_window.h"
+#include "graph/error.h"
 #include "sim/feature_simulator.h"
 
 namespace lrsvo {
@@ -254,6 +256,24 @@ TEST(SlidingWindowTest, RetiredKeyframesAreHeldAndNarrowTheScale) {
   EXPECT_EQ(window.keyframes().front().frame, 9);
   EXPECT_LT(window.scaleRelativeStd(), 0.05);
   EXPECT_GT(window.scaleRelativeStd(), 0.0);
+}
+
+// The held views' scale comes first, once; sigma 0 holds it at 1, otherwise
+// it is free under its prior.
+TEST(BundleGraphHeldViews, ScaleIsAddedFirstAndOnce) {
+  const SimulatedSequence sequence = odometryFlight(30.0, 10);
+  SparseMap map;
+  map.cameraFromWorld = {sequence.trueCameraFromWorld[0]};
+  BundleGraph held(sequence.rig, map, 1);
+  EXPECT_THROW(held.addHeldView(sequence.trueCameraFromWorld[3], Eigen::Vector3d::Zero(), sequence.frames[3]), Error);
+  held.addHeldViewScale(0.0);
+  EXPECT_TRUE(held.heldViewScale()->fixed());
+  EXPECT_THROW(held.addHeldViewScale(0.01), Error);
+  BundleGraph free(sequence.rig, map, 1);
+  free.addHeldViewScale(0.01);
+  EXPECT_FALSE(free.heldViewScale()->fixed());
+  EXPECT_DOUBLE_EQ(free.heldViewScale()->kappa(), 1.0);
+  EXPECT_THROW(BundleGraph(sequence.rig, map, 1).addHeldViewScale(-1.0), Error);
 }
 
 }  // namespace
