@@ -12,13 +12,14 @@ namespace lrsvo {
 EdgeProjectHeldView::EdgeProjectHeldView(const PinholeIntrinsics& intrinsics, const Eigen::Isometry3d& cameraFromWorld,
                                          const Eigen::Vector3d& origin)
     : intrinsics_(intrinsics),
-      rotation_(cameraFromWorld.rotation()),
+      quaternion_(cameraFromWorld.rotation()),
+      rotation_(quaternion_.toRotationMatrix()),
       origin_(origin),
       offset_(cameraFromWorld.inverse().translation() - origin) {}
 
 Eigen::Isometry3d EdgeProjectHeldView::cameraFromWorld(double s) const {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = rotation_.toRotationMatrix();
+  pose.linear() = rotation_;
   pose.translation() = -(pose.linear() * (origin_ + s * offset_));
   return pose;
 }
@@ -30,24 +31,25 @@ void EdgeProjectHeldView::computeResidual(Residual& residual) const {
 
 void EdgeProjectHeldView::computeJacobians() {
   const Eigen::Vector3d centre = origin_ + vertexAs<1>()->kappa() * offset_;
-  const Eigen::Matrix3d rotation = rotation_.toRotationMatrix();
   const Eigen::Matrix<double, 2, 3> dxdX =
-      intrinsics_.projectJacobian(rotation * (vertexAs<0>()->estimate() - centre)) * rotation;
+      intrinsics_.projectJacobian(rotation_ * (vertexAs<0>()->estimate() - centre)) * rotation_;
   jacobian<0>() = dxdX;
   jacobian<1>() = -dxdX * offset_;
 }
 
 void EdgeProjectHeldView::writeParameters(std::ostream& out) const {
   intrinsics_.write(out);
-  for (double value : rotation_.coeffs()) writeNumber(out, value);
+  for (double value : quaternion_.coeffs()) writeNumber(out, value);
   for (double value : origin_) writeNumber(out, value);
   for (double value : offset_) writeNumber(out, value);
 }
 
 void EdgeProjectHeldView::readParameters(std::istream& in) {
   intrinsics_.read(in, kTypeTag);
-  for (double& value : rotation_.coeffs()) value = readNumber(in, kTypeTag);
-  if (std::abs(rotation_.norm() - 1.0) > 1e-9) throw Error(std::string(kTypeTag) + ": the quaternion must have norm 1");
+  for (double& value : quaternion_.coeffs()) value = readNumber(in, kTypeTag);
+  if (std::abs(quaternion_.norm() - 1.0) > 1e-9)
+    throw Error(std::string(kTypeTag) + ": the quaternion must have norm 1");
+  rotation_ = quaternion_.toRotationMatrix();
   for (double& value : origin_) value = readNumber(in, kTypeTag);
   for (double& value : offset_) value = readNumber(in, kTypeTag);
 }

@@ -35,7 +35,8 @@ class EdgeProjectHeldView : public BaseEdge<2, VertexPoint3, VertexScale> {
 
  private:
   PinholeIntrinsics intrinsics_;
-  Eigen::Quaterniond rotation_ = Eigen::Quaterniond::Identity();  // camera from world
+  Eigen::Quaterniond quaternion_ = Eigen::Quaterniond::Identity();  // camera from world, as given (file I/O)
+  Eigen::Matrix3d rotation_ = Eigen::Matrix3d::Identity();          // of quaternion_, for the solver's loops
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d offset_ = Eigen::Vector3d::Zero();  // the centre at s = 1, minus origin
 };

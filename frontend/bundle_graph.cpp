@@ -77,12 +77,8 @@ void BundleGraph::holdDistance(int poseA, int poseB) { holdCentreDistance(graph_
 
 int BundleGraph::addObservations(int frame, const FrameObservations& observations) {
   VertexPose* pose = poses_.at(frame);
-  const Eigen::Matrix2d information = Eigen::Matrix2d::Identity() / (options_.sigma_px * options_.sigma_px);
   auto finish = [&]<class ProjectionEdge>(std::unique_ptr<ProjectionEdge> edge, const Observation& observation) {
-    edge->setMeasurement(observation.pixel);
-    edge->setInformation(information);
-    if (!options_.robustKernel.empty())
-      edge->setRobustKernel(makeRobustKernel(options_.robustKernel, options_.robustKernelDelta));
+    measure(*edge, observation.pixel);
     projections_.push_back({frame, observation, graph_.addEdge(std::move(edge)), &residualOf<ProjectionEdge>});
   };
   int added = 0;
@@ -144,17 +140,15 @@ int BundleGraph::addHeldView(const Eigen::Isometry3d& cameraFromWorld, const Eig
     auto edge = std::make_unique<EdgeProjectHeldView>(rig_.cameras[0].intrinsics, cameraFromWorld, origin);
     edge->setVertex(0, point->second);
     edge->setVertex(1, heldScale_);
-    edge->setMeasurement(observation.pixel);
-    edge->setInformation(Eigen::Matrix2d::Identity() / (options_.sigma_px * options_.sigma_px));
-    if (!options_.robustKernel.empty())
-      edge->setRobustKernel(makeRobustKernel(options_.robustKernel, options_.robustKernelDelta));
+    measure(*edge, observation.pixel);
     graph_.addEdge(std::move(edge));
     ++added;
   }
   return added;
 }
 
-std::vector<HeldCoordinate> BundleGraph::scaleGaugeCoordinates(const Bounds* enforced, double activeFraction) const {
+std::vector<HeldCoordinate> BundleGraph::scaleGaugeCoordinates(const Bounds* enforced) const {
+  constexpr double kActiveFraction = 0.02;  // of the half-width: an angle this close to a bound is held by it
   std::vector<HeldCoordinate> held;
   for (const VertexStereoExtrinsic* extrinsic : extrinsics_)
     if (extrinsic && !extrinsic->fixed())
@@ -162,7 +156,7 @@ std::vector<HeldCoordinate> BundleGraph::scaleGaugeCoordinates(const Bounds* enf
   if (!enforced) return held;
   for (const Bounds::Bound& bound : enforced->all()) {
     const double value = Bounds::value(bound);
-    const bool atBound = std::min(value - bound.lower, bound.upper - value) <= activeFraction * bound.halfWidth();
+    const bool atBound = std::min(value - bound.lower, bound.upper - value) <= kActiveFraction * bound.halfWidth();
     if (bound.index >= 3 && atBound) held.push_back({bound.vertex, bound.index});
   }
   return held;

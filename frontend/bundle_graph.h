@@ -13,6 +13,7 @@
 #include "frontend/sparse_map.h"
 #include "graph/graph.h"
 #include "graph/marginal_covariance.h"
+#include "graph/robust_kernel.h"
 #include "vertices/vertex_point3.h"
 #include "vertices/vertex_pose.h"
 #include "vertices/vertex_scale.h"
@@ -72,9 +73,9 @@ class BundleGraph {
   // What a marginal covariance of the map's scale must condition on: the free
   // extrinsics' centres c (scaling the map and c together changes no
   // projection, so only c's bounds fix that gauge) and, of `enforced` (the
-  // bounds the solve kept, or none), the angles within `activeFraction` of
-  // their half-width from a bound, which the bound rather than the data holds.
-  std::vector<HeldCoordinate> scaleGaugeCoordinates(const Bounds* enforced, double activeFraction) const;
+  // bounds the solve kept, or none), the angles within 2 % of their
+  // half-width from a bound, which the bound rather than the data holds.
+  std::vector<HeldCoordinate> scaleGaugeCoordinates(const Bounds* enforced) const;
   // The rig's box around calibration on every (free) extrinsic vertex.
   Bounds extrinsicBounds() const;
 
@@ -110,6 +111,15 @@ class BundleGraph {
     Eigen::Vector2d (*residual)(const Edge*);
   };
   std::vector<Projection> projections_;
+
+  // A projection edge's measured pixel, its noise (options_.sigma_px) and robust kernel.
+  template <class ProjectionEdge>
+  void measure(ProjectionEdge& edge, const Eigen::Vector2d& pixel) const {
+    edge.setMeasurement(pixel);
+    edge.setInformation(Eigen::Matrix2d::Identity() / (options_.sigma_px * options_.sigma_px));
+    if (!options_.robustKernel.empty())
+      edge.setRobustKernel(makeRobustKernel(options_.robustKernel, options_.robustKernelDelta));
+  }
 };
 
 }  // namespace lrsvo

@@ -14,10 +14,6 @@
 namespace lrsvo {
 namespace {
 
-// An angle this close to a bound (as a fraction of the half-width) is held by
-// it, so its direction is conditioned on when kappa's uncertainty is computed.
-constexpr double kActiveBoundFraction = 0.02;
-
 std::string format(const char* pattern, double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, pattern, value);
@@ -39,7 +35,7 @@ void validate(const LongRangeInitializerOptions& o) {
 // distance prior's own spread, which the product cancels. Conditioned on the
 // extrinsic centres and on angles at a bound (see the class comment).
 double scaleRelativeStd(BundleGraph& bundle, const Bounds& bounds, int lastPose) {
-  const std::vector<HeldCoordinate> held = bundle.scaleGaugeCoordinates(&bounds, kActiveBoundFraction);
+  const std::vector<HeldCoordinate> held = bundle.scaleGaugeCoordinates(&bounds);
   const VertexPose& last = *bundle.pose(lastPose);
   const Eigen::MatrixXd covariance = marginalCovariance(bundle.graph(), {bundle.scale(), &last}, held);
   // d(kappa L) / (kappa L) = dkappa / kappa + dL / L; pose 0 is fixed and the

@@ -24,10 +24,6 @@ std::unordered_map<int, int> baseViewCounts(const std::deque<Keyframe>& keyframe
   return counts;
 }
 
-// An angle this close to a bound (as a fraction of the half-width) is held by
-// it when the scale's variance is computed.
-constexpr double kActiveBoundFraction = 0.02;
-
 // The relative variance of the scale the held views carry, after an
 // adjustment that held it with a prior of `priorVariance`. The window's
 // marginal counts every observation in it, but each keyframe stays in the
@@ -37,8 +33,7 @@ double carriedScaleVariance(BundleGraph& bundle, const Bounds* enforced, double 
   const VertexScale* scale = bundle.heldViewScale();
   double windowVariance = priorVariance;
   try {
-    windowVariance = marginalCovariance(bundle.graph(), {scale}, bundle.scaleGaugeCoordinates(enforced,
-                                                                                                kActiveBoundFraction))(0, 0);
+    windowVariance = marginalCovariance(bundle.graph(), {scale}, bundle.scaleGaugeCoordinates(enforced))(0, 0);
   } catch (const Error&) {
     return priorVariance;  // s held, or its information singular: nothing learnt
   }
