@@ -32,6 +32,13 @@ void OdometrySettings::addOptions(CLI::App& command) {
                   "from window to window")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  command
+      .add_option("--extrinsic-rate", extrinsicRate,
+                  "Prior std of how fast S changes, in its bound half-widths per second: each window estimates S "
+                  "and its rate, so a rig flexing within the window is followed (0: one constant S per window, the "
+                  "paper's model)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   command.add_option("--detector", detector, "Feature detector: gftt or fast (KLT tracking), orb (descriptors)")
       ->capture_default_str();
   command.add_option("--features", features, "Features kept per frame (new ones detected below this)")
@@ -60,6 +67,7 @@ RunOptions OdometrySettings::runOptions() const {
   odometry.windowSize = window;
   odometry.anchorKeyframes = anchors;
   odometry.scaleDriftPerKeyframe = scaleDrift;
+  odometry.extrinsicRateSigma = extrinsicRate;
   odometry.solver = solver;
   odometry.seed = seed;
   if (rigid)

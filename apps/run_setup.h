@@ -21,6 +21,7 @@ struct OdometrySettings {
   int window = 15;
   int anchors = 5;
   double scaleDrift = 3e-4;
+  double extrinsicRate = 1.0;
   std::string detector = "gftt";
   int features = 300;
   double band_px = 8.0;

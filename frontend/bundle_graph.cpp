@@ -6,6 +6,7 @@
 #include <string>
 
 #include "edges/edge_centre_distance.h"
+#include "edges/edge_extrinsic_rate_prior.h"
 #include "edges/edge_scale_prior.h"
 #include "graph/error.h"
 #include "graph/robust_kernel.h"
@@ -49,6 +50,7 @@ BundleGraph::BundleGraph(const Rig& rig, const SparseMap& map, int fixedPoses, B
     : rig_(rig), options_(std::move(options)) {
   rig.validate();
   extrinsics_.assign(rig.secondaryCount(), nullptr);
+  rates_.assign(rig.secondaryCount(), nullptr);
   if (!(options_.sigma_px > 0.0)) throw Error("bundle graph: sigma_px must be positive");
   for (std::size_t i = 0; i < map.cameraFromWorld.size(); ++i) {
     auto pose = std::make_unique<VertexPose>(nextId_++, map.cameraFromWorld[i]);
@@ -68,7 +70,28 @@ VertexStereoExtrinsic* BundleGraph::addExtrinsic(int camera, const Vector6& valu
   return extrinsics_[camera - 1];
 }
 
+VertexExtrinsicRate* BundleGraph::addExtrinsicRate(int camera, const Vector6& rate, const Vector6& sigma,
+                                                   double referenceTime_s) {
+  if (!extrinsic(camera))
+    throw Error("bundle graph: camera " + std::to_string(camera) + "'s extrinsic must be added before its rate");
+  if (scale_) throw Error("bundle graph: an extrinsic rate cannot join a graph with kappa");
+  if (!((sigma.array() > 0.0).all() && sigma.allFinite()))
+    throw Error("bundle graph: every sigma of an extrinsic rate's prior must be finite and positive");
+  for (const VertexExtrinsicRate* other : rates_)
+    if (other && rateReferenceTime_s_ != referenceTime_s)
+      throw Error("bundle graph: every extrinsic rate must share one reference time");
+  rateReferenceTime_s_ = referenceTime_s;
+  rates_[camera - 1] = graph_.addVertex(std::make_unique<VertexExtrinsicRate>(nextId_++, rate));
+  auto prior = std::make_unique<EdgeExtrinsicRatePrior>();
+  prior->setVertex(0, rates_[camera - 1]);
+  prior->setInformation(sigma.array().square().inverse().matrix().asDiagonal());
+  graph_.addEdge(std::move(prior));
+  return rates_[camera - 1];
+}
+
 VertexScale* BundleGraph::addScale(double kappa) {
+  if (std::any_of(rates_.begin(), rates_.end(), [](const VertexExtrinsicRate* rate) { return rate != nullptr; }))
+    throw Error("bundle graph: kappa cannot join a graph with an extrinsic rate");
   scale_ = graph_.addVertex(std::make_unique<VertexScale>(nextId_++, kappa));
   return scale_;
 }
@@ -96,7 +119,14 @@ int BundleGraph::addObservations(int frame, const FrameObservations& observation
     VertexStereoExtrinsic* extrinsic = this->extrinsic(observation.camera);
     if (!extrinsic) continue;
     const SecondaryCamera camera{observation.camera, rig_.cameras[observation.camera].intrinsics};
-    if (scale_) {
+    if (VertexExtrinsicRate* rate = extrinsicRate(observation.camera)) {
+      auto edge = std::make_unique<EdgeProjectSecondaryDrifting>(camera, observations.time_s - rateReferenceTime_s_);
+      edge->setVertex(0, pose);
+      edge->setVertex(1, point->second);
+      edge->setVertex(2, extrinsic);
+      edge->setVertex(3, rate);
+      finish(std::move(edge), observation);
+    } else if (scale_) {
       auto edge = std::make_unique<EdgeProjectSecondaryScaled>(camera);
       edge->setVertex(0, pose);
       edge->setVertex(1, point->second);
@@ -153,6 +183,9 @@ std::vector<HeldCoordinate> BundleGraph::scaleGaugeCoordinates(const Bounds* enf
   for (const VertexStereoExtrinsic* extrinsic : extrinsics_)
     if (extrinsic && !extrinsic->fixed())
       for (int i = 0; i < 3; ++i) held.push_back({extrinsic, i});
+  for (const VertexExtrinsicRate* rate : rates_)
+    if (rate && !rate->fixed())
+      for (int i = 0; i < 3; ++i) held.push_back({rate, i});
   if (!enforced) return held;
   for (const Bounds::Bound& bound : enforced->all()) {
     const double value = Bounds::value(bound);
@@ -172,6 +205,11 @@ Bounds BundleGraph::extrinsicBounds() const {
 VertexStereoExtrinsic* BundleGraph::extrinsic(int camera) const {
   if (camera < 1 || camera > rig_.secondaryCount()) return nullptr;
   return extrinsics_[camera - 1];
+}
+
+VertexExtrinsicRate* BundleGraph::extrinsicRate(int camera) const {
+  if (camera < 1 || camera > rig_.secondaryCount()) return nullptr;
+  return rates_[camera - 1];
 }
 
 SparseMap BundleGraph::map() const {

@@ -8,12 +8,14 @@
 #include "edges/edge_project_base.h"
 #include "edges/edge_project_held_view.h"
 #include "edges/edge_project_secondary.h"
+#include "edges/edge_project_secondary_drifting.h"
 #include "frontend/observations.h"
 #include "frontend/rig.h"
 #include "frontend/sparse_map.h"
 #include "graph/graph.h"
 #include "graph/marginal_covariance.h"
 #include "graph/robust_kernel.h"
+#include "vertices/vertex_extrinsic_rate.h"
 #include "vertices/vertex_point3.h"
 #include "vertices/vertex_pose.h"
 #include "vertices/vertex_scale.h"
@@ -51,6 +53,11 @@ class BundleGraph {
 
   // Secondary camera k's extrinsic (k >= 1), held at `value` when fixed.
   VertexStereoExtrinsic* addExtrinsic(int camera, const Vector6& value, bool fixed);
+  // Lets camera k's extrinsic (added first) change linearly in time: a frame
+  // at time t sees s + (t - referenceTime_s) * rate (VertexExtrinsicRate),
+  // the rate starting at `rate` with a prior N(0, diag(sigma^2)), every sigma
+  // > 0. Applies to the secondary edges added after this call; not with kappa.
+  VertexExtrinsicRate* addExtrinsicRate(int camera, const Vector6& rate, const Vector6& sigma, double referenceTime_s);
   // kappa (method.md eq. 5) on every secondary edge added after this call.
   VertexScale* addScale(double kappa);
   // Holds the map's unit at the distance between poses a and b (holdCentreDistance).
@@ -68,11 +75,13 @@ class BundleGraph {
   // of edges added.
   int addHeldView(const Eigen::Isometry3d& cameraFromWorld, const Eigen::Vector3d& origin,
                   const FrameObservations& observations);
+  // Secondary camera k's extrinsic rate vertex, or nullptr.
+  VertexExtrinsicRate* extrinsicRate(int camera) const;
   // The held views' scale s, or nullptr before addHeldViewScale.
   VertexScale* heldViewScale() const { return heldScale_; }
   // What a marginal covariance of the map's scale must condition on: the free
   // extrinsics' centres c (scaling the map and c together changes no
-  // projection, so only c's bounds fix that gauge) and, of `enforced` (the
+  // projection, so only c's bounds fix that gauge; likewise c's rate) and, of `enforced` (the
   // bounds the solve kept, or none), the angles within 2 % of their
   // half-width from a bound, which the bound rather than the data holds.
   std::vector<HeldCoordinate> scaleGaugeCoordinates(const Bounds* enforced) const;
@@ -100,10 +109,12 @@ class BundleGraph {
   std::vector<VertexPose*> poses_;
   std::map<int, VertexPoint3*> points_;
   std::vector<VertexStereoExtrinsic*> extrinsics_;  // [k - 1], nullptr when not added
+  std::vector<VertexExtrinsicRate*> rates_;         // [k - 1], nullptr when not added
+  double rateReferenceTime_s_ = 0.0;
   VertexScale* scale_ = nullptr;
   VertexScale* heldScale_ = nullptr;  // of the held views (addHeldViewScale)
   // One per projection edge: which observation it measures and how to read
-  // its residual (the three edge types share no residual interface).
+  // its residual (the edge types share no residual interface).
   struct Projection {
     int frame;
     Observation observation;

@@ -103,7 +103,7 @@ std::vector<FrameEstimate> Odometry::initialize() {
       estimate.keyframe = true;
       estimate.segment = segment_;
       estimate.cameraFromWorld = keyframes[i / static_cast<std::size_t>(step)].cameraFromWorld;
-      estimate.extrinsics = window_.extrinsics();
+      estimate.extrinsics = window_.extrinsicsAt(pending_[i].time_s);
       estimate.windowRmsError_px = result.rmsReprojectionError_px;
       estimate.bundleIterations = result.summary.iterationCount();
     } else {
@@ -113,7 +113,7 @@ std::vector<FrameEstimate> Odometry::initialize() {
         estimate.tracked = true;
         estimate.segment = segment_;
         estimate.cameraFromWorld = pose;
-        estimate.extrinsics = window_.extrinsics();
+        estimate.extrinsics = window_.extrinsicsAt(pending_[i].time_s);
       }
     }
     estimate.mapPoints = static_cast<int>(window_.points().size());
@@ -192,7 +192,7 @@ FrameEstimate Odometry::track(const FrameObservations& frame, int index) {
     pose = window_.keyframes().back().cameraFromWorld;
   }
   estimate.cameraFromWorld = pose;
-  estimate.extrinsics = window_.extrinsics();
+  estimate.extrinsics = window_.extrinsicsAt(frame.time_s);
   estimate.mapPoints = static_cast<int>(window_.points().size());
   estimate.windowFrames = static_cast<int>(window_.keyframes().size());
   lastWorldFromCamera_ = pose.inverse();

@@ -1,5 +1,6 @@
 #include "frontend/odometry_options.h"
 
+#include <cmath>
 #include <string>
 
 #include "graph/error.h"
@@ -32,6 +33,8 @@ void OdometryOptions::validate() const {
   require(fixedPoses >= 1 && fixedPoses < windowSize, "fixedPoses must be in [1, windowSize)");
   require(anchorKeyframes >= 0, "anchorKeyframes must not be negative");
   require(scaleDriftPerKeyframe >= 0.0, "scaleDriftPerKeyframe must not be negative");
+  require(extrinsicRateSigma >= 0.0 && std::isfinite(extrinsicRateSigma),
+          "extrinsicRateSigma must be finite and not negative");
   require(initializer.frames <= windowSize, "the initialiser's frames must fit the window");
   require(maxIterations >= 1, "maxIterations must be positive");
   require(outlierThreshold_px > 0.0, "outlierThreshold_px must be positive");

@@ -43,6 +43,15 @@ struct OdometryOptions {
   // barely measures scale (its disparity is smaller than S's rotation box), so
   // without the prior the scale would jump. 0: no drift allowed.
   double scaleDriftPerKeyframe = 3e-4;
+  // How fast S may change, as the prior std of its rate: in the rig's bound
+  // half-widths (Rig::tolerance) per second. Each adjustment then estimates S
+  // at its newest keyframe and S's rate, older keyframes seeing
+  // s + (t - t_newest) * rate, and the next window starts from S moved on at
+  // that rate. A rig flexing by its whole box within seconds moves S by
+  // pixels across the ~1-2 s a window spans; one constant S lags it and the
+  // newest keyframes, triangulated through the lagging S, step too far.
+  // 0: one constant S per window (the paper's model).
+  double extrinsicRateSigma = 1.0;
   ExtrinsicMode extrinsicMode = ExtrinsicMode::kBounded;
   std::string constraintMethod = "log_barrier";  // any name of Registry<ConstraintMethod>, for kBounded
   // One barrier round: each window starts from the last window's S, already

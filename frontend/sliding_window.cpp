@@ -54,14 +54,31 @@ void SlidingWindow::reset(std::vector<Keyframe> keyframes, std::map<int, Eigen::
   points_ = std::move(points);
   extrinsics_ = std::move(extrinsics);
   if (options_.extrinsicMode == ExtrinsicMode::kRigid) extrinsics_ = rig_.extrinsics;
+  rates_.assign(extrinsics_.size(), Vector6::Zero());
+  extrinsicTime_s_ = keyframes_.empty() ? 0.0 : keyframes_.back().observations.time_s;
   retire();
 }
 
 void SlidingWindow::addKeyframe(Keyframe keyframe) { keyframes_.push_back(std::move(keyframe)); }
 
-Eigen::Isometry3d SlidingWindow::cameraFromWorld(const Eigen::Isometry3d& baseFromWorld, int camera) const {
+SlidingWindow::Vector6 SlidingWindow::extrinsicAt(int camera, double time_s) const {
+  Vector6 s = extrinsics_[camera - 1] + (time_s - extrinsicTime_s_) * rates_[camera - 1];
+  if (options_.extrinsicMode != ExtrinsicMode::kBounded) return s;
+  // Moved on at its rate, S may not leave the box a bounded window keeps it in.
+  const Vector6& calibration = rig_.extrinsics[camera - 1];
+  return s.cwiseMax(calibration - rig_.tolerance).cwiseMin(calibration + rig_.tolerance);
+}
+
+std::vector<SlidingWindow::Vector6> SlidingWindow::extrinsicsAt(double time_s) const {
+  std::vector<Vector6> values;
+  for (int k = 1; k <= static_cast<int>(extrinsics_.size()); ++k) values.push_back(extrinsicAt(k, time_s));
+  return values;
+}
+
+Eigen::Isometry3d SlidingWindow::cameraFromWorld(const Eigen::Isometry3d& baseFromWorld, int camera,
+                                                 double time_s) const {
   if (camera == 0) return baseFromWorld;
-  return secondaryFromBase(extrinsics_[camera - 1]) * baseFromWorld;
+  return secondaryFromBase(extrinsicAt(camera, time_s)) * baseFromWorld;
 }
 
 int SlidingWindow::triangulateNewTracks() {
@@ -73,8 +90,9 @@ int SlidingWindow::triangulateNewTracks() {
       if (points_.count(observation.track)) continue;
       auto count = counts.find(observation.track);
       if (count == counts.end() || count->second < options_.minTriangulationViews) continue;
-      const TriangulationView view{cameraFromWorld(keyframe.cameraFromWorld, observation.camera),
-                                   rig_.cameras[observation.camera].intrinsics, observation.pixel};
+      const TriangulationView view{
+          cameraFromWorld(keyframe.cameraFromWorld, observation.camera, keyframe.observations.time_s),
+          rig_.cameras[observation.camera].intrinsics, observation.pixel};
       views[observation.track].push_back(view);
       if (observation.camera == 0) baseViews[observation.track].push_back(view);
     }
@@ -100,8 +118,7 @@ SolverSummary SlidingWindow::solve(BundleGraph& bundle, const Bounds& bounds) co
   solver.threads = options_.threads;
   switch (options_.extrinsicMode) {
     case ExtrinsicMode::kBounded:
-      return optimizeWithBounds(bundle.graph(), solver, bounds, options_.constraintMethod,
-                                options_.constraintSettings);
+      return optimizeWithBounds(bundle.graph(), solver, bounds, options_.constraintMethod, options_.constraintSettings);
     case ExtrinsicMode::kFree:
     case ExtrinsicMode::kRigid: break;
   }
@@ -120,8 +137,17 @@ WindowAdjustment SlidingWindow::adjust() {
   }
   BundleGraph bundle(rig_, map, std::min<int>(options_.fixedPoses, static_cast<int>(keyframes_.size())),
                      options_.bundle);
+  // S is estimated at the newest keyframe's time; with a rate, older
+  // keyframes see it as it was then.
   const bool extrinsicFixed = options_.extrinsicMode == ExtrinsicMode::kRigid;
-  for (int k = 1; k <= rig_.secondaryCount(); ++k) bundle.addExtrinsic(k, extrinsics_[k - 1], extrinsicFixed);
+  const bool drifting = !extrinsicFixed && options_.extrinsicRateSigma > 0.0;
+  const double referenceTime_s = keyframes_.back().observations.time_s;
+  const std::vector<Vector6> start = extrinsicsAt(referenceTime_s);
+  for (int k = 1; k <= rig_.secondaryCount(); ++k) {
+    bundle.addExtrinsic(k, start[k - 1], extrinsicFixed);
+    if (drifting)
+      bundle.addExtrinsicRate(k, rates_[k - 1], options_.extrinsicRateSigma * rig_.tolerance, referenceTime_s);
+  }
   for (std::size_t i = 0; i < keyframes_.size(); ++i)
     bundle.addObservations(static_cast<int>(i), keyframes_[i].observations);
   // Held views scale about the oldest keyframe's centre, which is held too.
@@ -138,6 +164,8 @@ WindowAdjustment SlidingWindow::adjust() {
   for (std::size_t i = 0; i < keyframes_.size(); ++i) keyframes_[i].cameraFromWorld = solved.cameraFromWorld[i];
   for (const auto& [track, point] : solved.points) points_[track] = point;
   extrinsics_ = bundle.extrinsics();
+  extrinsicTime_s_ = referenceTime_s;
+  for (int k = 1; drifting && k <= rig_.secondaryCount(); ++k) rates_[k - 1] = bundle.extrinsicRate(k)->estimate();
   if (!anchors_.empty()) {
     const bool bounded = options_.extrinsicMode == ExtrinsicMode::kBounded;
     scaleVariance_ = carriedScaleVariance(bundle, bounded ? &bounds : nullptr, priorVariance, options_.windowSize);

@@ -60,22 +60,33 @@ class SlidingWindow {
   // The most recently retired keyframes, held in each adjustment (OdometryOptions::anchorKeyframes).
   const std::deque<Keyframe>& anchors() const { return anchors_; }
   const std::map<int, Eigen::Vector3d>& points() const { return points_; }
+  // S at the newest keyframe of the last adjustment (per secondary camera).
   const std::vector<Vector6>& extrinsics() const { return extrinsics_; }
+  // S at time t: the last adjustment's S moved on at its rate (zero when the
+  // window holds one S for all its keyframes: OdometryOptions::extrinsicRateSigma 0),
+  // and kept in the rig's box when bounded.
+  std::vector<Vector6> extrinsicsAt(double time_s) const;
+  // S's rate per second (per secondary camera).
+  const std::vector<Vector6>& extrinsicRates() const { return rates_; }
   // The relative standard deviation of the map's scale the window carries.
   double scaleRelativeStd() const;
-  // Camera k's pose (camera-from-world) for a base pose through the current S.
-  Eigen::Isometry3d cameraFromWorld(const Eigen::Isometry3d& baseFromWorld, int camera) const;
+  // Camera k's pose (camera-from-world) for a base pose at time t, through S then.
+  Eigen::Isometry3d cameraFromWorld(const Eigen::Isometry3d& baseFromWorld, int camera, double time_s) const;
 
  private:
   SolverSummary solve(class BundleGraph& bundle, const Bounds& bounds) const;
+  // Camera k's S at time t (extrinsicsAt).
+  Vector6 extrinsicAt(int camera, double time_s) const;
 
   const Rig& rig_;
   const OdometryOptions& options_;
   std::deque<Keyframe> keyframes_;
   std::deque<Keyframe> anchors_;  // oldest first
   std::map<int, Eigen::Vector3d> points_;
-  std::vector<Vector6> extrinsics_;  // [k - 1]
-  double scaleVariance_ = 0.0;       // relative, of the map's scale
+  std::vector<Vector6> extrinsics_;  // [k - 1], at extrinsicTime_s_
+  std::vector<Vector6> rates_;       // [k - 1], per second
+  double extrinsicTime_s_ = 0.0;
+  double scaleVariance_ = 0.0;  // relative, of the map's scale
 };
 
 }  // namespace lrsvo

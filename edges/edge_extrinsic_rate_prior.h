@@ -1,0 +1,20 @@
+#pragma once
+
+#include "graph/base_edge.h"
+#include "vertices/vertex_extrinsic_rate.h"
+
+namespace lrsvo {
+
+// A Gaussian prior on an extrinsic's rate: r = rate - measurement, with the
+// information diag(1 / sigma^2) of how fast the rig may flex. A window sees
+// its rate through small differences between its keyframes' stereo rays;
+// the prior keeps noise from passing for flex.
+class EdgeExtrinsicRatePrior : public BaseEdge<6, VertexExtrinsicRate> {
+ public:
+  static constexpr const char* kTypeTag = "STEREO_EXTRINSIC_RATE_PRIOR";
+  const char* typeTag() const override { return kTypeTag; }
+  void computeResidual(Residual& residual) const override;
+  void computeJacobians() override;
+};
+
+}  // namespace lrsvo
