@@ -18,8 +18,6 @@ class EdgeProjectSecondaryDrifting
   EdgeProjectSecondaryDrifting() = default;
   EdgeProjectSecondaryDrifting(const SecondaryCamera& camera, double dt_s) : camera_(camera), dt_s_(dt_s) {}
 
-  const SecondaryCamera& camera() const { return camera_; }
-  double dt_s() const { return dt_s_; }
   const char* typeTag() const override { return kTypeTag; }
   void computeResidual(Residual& residual) const override;
   void computeJacobians() override;

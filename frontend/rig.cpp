@@ -29,6 +29,11 @@ void Rig::addBounds(Bounds& bounds, Vertex* vertex, int camera) const {
   for (int i = 0; i < 6; ++i) bounds.set(vertex, i, p[i] - tolerance[i], p[i] + tolerance[i]);
 }
 
+VertexStereoExtrinsic::Vector6 Rig::clampToBox(const VertexStereoExtrinsic::Vector6& s, int camera) const {
+  const VertexStereoExtrinsic::Vector6& p = extrinsics.at(camera - 1);
+  return s.cwiseMax(p - tolerance).cwiseMin(p + tolerance);
+}
+
 void Rig::validate() const {
   if (cameras.empty()) throw Error("rig: no camera");
   if (extrinsics.size() + 1 != cameras.size())

@@ -41,6 +41,8 @@ struct Rig {
   Eigen::Isometry3d cameraFromWorld(const Eigen::Isometry3d& baseFromWorld, int camera) const;
   // The box around calibration for secondary camera k on `vertex`.
   void addBounds(Bounds& bounds, Vertex* vertex, int camera) const;
+  // The nearest extrinsic to s inside camera k's box.
+  VertexStereoExtrinsic::Vector6 clampToBox(const VertexStereoExtrinsic::Vector6& s, int camera) const;
   // Throws lrsvo::Error when the rig is unusable (no camera, bad sizes, missing extrinsics).
   void validate() const;
 };

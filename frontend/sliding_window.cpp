@@ -62,11 +62,9 @@ void SlidingWindow::reset(std::vector<Keyframe> keyframes, std::map<int, Eigen::
 void SlidingWindow::addKeyframe(Keyframe keyframe) { keyframes_.push_back(std::move(keyframe)); }
 
 SlidingWindow::Vector6 SlidingWindow::extrinsicAt(int camera, double time_s) const {
-  Vector6 s = extrinsics_[camera - 1] + (time_s - extrinsicTime_s_) * rates_[camera - 1];
-  if (options_.extrinsicMode != ExtrinsicMode::kBounded) return s;
+  const Vector6 s = extrinsicAfter(extrinsics_[camera - 1], rates_[camera - 1], time_s - extrinsicTime_s_);
   // Moved on at its rate, S may not leave the box a bounded window keeps it in.
-  const Vector6& calibration = rig_.extrinsics[camera - 1];
-  return s.cwiseMax(calibration - rig_.tolerance).cwiseMin(calibration + rig_.tolerance);
+  return options_.extrinsicMode == ExtrinsicMode::kBounded ? rig_.clampToBox(s, camera) : s;
 }
 
 std::vector<SlidingWindow::Vector6> SlidingWindow::extrinsicsAt(double time_s) const {
@@ -85,21 +83,24 @@ int SlidingWindow::triangulateNewTracks() {
   // Per track: every view, and the base camera's alone.
   std::unordered_map<int, std::vector<TriangulationView>> views, baseViews;
   const std::unordered_map<int, int> counts = baseViewCounts(keyframes_);
-  for (const Keyframe& keyframe : keyframes_)
+  for (const Keyframe& keyframe : keyframes_) {
+    std::vector<Eigen::Isometry3d> cameras;  // [k]: this keyframe's camera poses, through S at its time
+    for (int k = 0; k <= rig_.secondaryCount(); ++k)
+      cameras.push_back(cameraFromWorld(keyframe.cameraFromWorld, k, keyframe.observations.time_s));
     for (const Observation& observation : keyframe.observations.observations) {
       if (points_.count(observation.track)) continue;
       auto count = counts.find(observation.track);
       if (count == counts.end() || count->second < options_.minTriangulationViews) continue;
-      const TriangulationView view{
-          cameraFromWorld(keyframe.cameraFromWorld, observation.camera, keyframe.observations.time_s),
-          rig_.cameras[observation.camera].intrinsics, observation.pixel};
+      const TriangulationView view{cameras[observation.camera], rig_.cameras[observation.camera].intrinsics,
+                                   observation.pixel};
       views[observation.track].push_back(view);
       if (observation.camera == 0) baseViews[observation.track].push_back(view);
     }
+  }
   int added = 0;
   for (const auto& [track, trackViews] : views) {
     TriangulationResult result = triangulate(trackViews, options_.triangulation);
-    // The secondary rays go through the current S: while S lags a fast
+    // The secondary rays go through the estimated S: while S lags a fast
     // deformation they disagree with the base views, and the track would go
     // unmapped. The base camera's own views still place it.
     if (!result.valid && trackViews.size() > baseViews[track].size())
