@@ -53,8 +53,9 @@ SANITIZE_OPTIONS := -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLRSVO_SANITIZE=ON -DLRSV
 # constraint plugin or start scale; whole rendered flights; whole simulated flights run two or eight times). The code
 # they exercise runs under the sanitizers in the smaller tests of the same suites (e.g.
 # Constraints.EveryPluginKeepsTheExtrinsicInItsBox, ImageRenderer.*, OdometryRunEuroc.*,
-# OdometryFlight.RecoversFromTrackingLossInANewSegment).
-SANITIZE_SKIP := lrsvo_demo|example_three_camera_vo|OdometryRunSim\..*|OdometryFlight\.(HeldKeyframesStopTheWindowJumpingAtLongRange|BoundedExtrinsicTracksAFlexedRigWhereRigidStereoFails)|Constraints\.(ActiveBoundsAgreeAcrossBarrierGradientProjectionAndNlopt|KktHoldsAtTheSolution|LogBarrierRoundsContinueFromAnIterateNearAnActiveBound|LogBarrierEndsJustInsideTheActiveBounds)|ScaleInitialisation\.WithoutKappaStartScalesFarFromOneAreNotRecovered
+# OdometryFlight.RecoversFromTrackingLossInANewSegment, ExtrinsicRateWindow.ExtrinsicMovesOnAtItsRateInsideTheBox,
+# ImageFrontEnd.MatchesAcrossTheRigOnRequestAsProcessWould).
+SANITIZE_SKIP := lrsvo_demo|example_three_camera_vo|OdometryRunSim\..*|OdometryFlight\.(HeldKeyframesStopTheWindowJumpingAtLongRange|BoundedExtrinsicTracksAFlexedRigWhereRigidStereoFails|FetchesSecondaryObservationsOnlyForTheFramesItKeeps)|ExtrinsicRateWindow\.FollowsAFlexingRigAtTheNewestKeyframe|Constraints\.(ActiveBoundsAgreeAcrossBarrierGradientProjectionAndNlopt|KktHoldsAtTheSolution|LogBarrierRoundsContinueFromAnIterateNearAnActiveBound|LogBarrierEndsJustInsideTheActiveBounds)|ScaleInitialisation\.WithoutKappaStartScalesFarFromOneAreNotRecovered
 sanitize: export ASAN_OPTIONS := detect_leaks=1
 sanitize: export UBSAN_OPTIONS := print_stacktrace=1:halt_on_error=1
 sanitize: deps

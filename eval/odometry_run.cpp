@@ -62,18 +62,32 @@ OdometryPipeline::~OdometryPipeline() = default;
 
 void OdometryPipeline::process(const StereoFrame& frame) {
   const auto start = Clock::now();
-  const FrameObservations observations = frontEnd_->process(frame);
+  const FrameObservations observations = frontEnd_->track(frame);
   result_.totals.frontEndSeconds += secondsSince(start);
-  process(observations, frontEnd_->lastTimings());
+  // Stereo matching runs only for the frames the odometry keeps; its time is the front end's.
+  double stereoSeconds = 0.0;
+  run(observations, frontEnd_->lastTimings(), [&] {
+    const auto matchStart = Clock::now();
+    std::vector<Observation> secondary = frontEnd_->matchAcrossRig();
+    stereoSeconds = secondsSince(matchStart);
+    pendingTimings_.back() = frontEnd_->lastTimings();
+    return secondary;
+  });
+  result_.totals.frontEndSeconds += stereoSeconds;
+  result_.totals.backEndSeconds -= stereoSeconds;
 }
 
 void OdometryPipeline::process(const FrameObservations& observations, const FrontEndTimings& frontEnd) {
+  run(observations, frontEnd, {});
+}
+
+void OdometryPipeline::run(const FrameObservations& observations, const FrontEndTimings& frontEnd,
+                           const SecondaryObservations& secondary) {
   RunTotals& totals = result_.totals;
-  addTimings(totals.frontEnd, frontEnd);
   pendingTimings_.push_back(frontEnd);
 
   const auto start = Clock::now();
-  const std::vector<FrameEstimate> estimates = odometry_->process(observations);
+  const std::vector<FrameEstimate> estimates = odometry_->process(observations, secondary);
   frontEnd_->dropTracks(odometry_->takeRejectedTracks());
   totals.backEndSeconds += secondsSince(start);
   ++totals.frames;
@@ -92,6 +106,7 @@ void OdometryPipeline::record(const std::vector<FrameEstimate>& estimates) {
     if (pendingTimings_.empty()) throw Error("odometry pipeline: an estimate for a frame never processed");
     const FrontEndTimings timings = pendingTimings_.front();
     pendingTimings_.pop_front();
+    addTimings(totals.frontEnd, timings);
     addTimes(totals.backEnd, estimate.times);
     totals.tracked += estimate.tracked;
     totals.keyframes += estimate.keyframe;

@@ -67,6 +67,8 @@ class OdometryPipeline {
   const RunTotals& totals() const { return result_.totals; }
 
  private:
+  void run(const FrameObservations& observations, const FrontEndTimings& frontEnd,
+           const SecondaryObservations& secondary);
   void record(const std::vector<FrameEstimate>& estimates);
 
   std::unique_ptr<Odometry> odometry_;

@@ -27,6 +27,8 @@ std::vector<cv::Point2f> pixelsOf(const std::vector<Track>& tracks) {
 
 FeatureTracker::FeatureTracker(const FeatureTrackerOptions& options) : options_(options), detector_(options.detector) {
   if (options.targetFeatures < 1) throw Error("feature tracker: targetFeatures must be at least 1");
+  if (!(options.topUpFraction >= 0.0 && options.topUpFraction <= 1.0))
+    throw Error("feature tracker: topUpFraction must lie in [0, 1]");
   if (!(options.descriptorRatio > 0.0 && options.descriptorRatio <= 1.0))
     throw Error("feature tracker: descriptorRatio must lie in (0, 1]");
 }
@@ -49,7 +51,7 @@ const std::vector<Track>& FeatureTracker::track(const KltImage& image) {
     statistics_.track_ms = millisecondsSince(trackStart);
     statistics_.tracked = static_cast<int>(tracks_.size());
     const int wanted = options_.targetFeatures - statistics_.tracked;
-    if (wanted > 0) {
+    if (wanted > 0 && wanted >= options_.topUpFraction * options_.targetFeatures) {
       const auto detectStart = std::chrono::steady_clock::now();
       addNew(detector_.detect(image.image, pixelsOf(tracks_), wanted), wanted);
       statistics_.detect_ms = millisecondsSince(detectStart);

@@ -17,6 +17,10 @@ namespace lrsvo {
 struct FeatureTrackerOptions {
   DetectorOptions detector;
   int targetFeatures = 300;  // top up with new features when fewer survive
+  // "klt": new features are detected only once this fraction of targetFeatures
+  // is missing. Detection scans the image and tracking only the tracks, so
+  // topping up the few lost every frame would cost more than the tracking.
+  double topUpFraction = 0.1;
   KltOptions klt;
   double descriptorSearch_px = 40.0;  // "descriptor": radius around the previous position
   double descriptorRatio = 0.8;       // best distance below this times the second best

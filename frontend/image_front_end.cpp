@@ -69,29 +69,29 @@ int ImageFrontEnd::rejectOutliers(const std::vector<Track>& tracks, const std::v
   return static_cast<int>(outliers.size());
 }
 
-FrameObservations ImageFrontEnd::process(const StereoFrame& frame) {
+FrameObservations ImageFrontEnd::track(const StereoFrame& frame) {
   checkFrame(frame);
   timings_ = {};
   const Clock::time_point start = Clock::now();
-  const KltImage base = makeKltImage(frame.images[0], pyramid_);
+  base_ = makeKltImage(frame.images[0], pyramid_);
   const double pyramid_ms = millisecondsSince(start);
-  tracker_.track(base);
+  tracker_.track(base_);
   const TrackerStatistics& statistics = tracker_.lastStatistics();
   timings_.detect_ms = statistics.detect_ms;
   timings_.track_ms = pyramid_ms + statistics.track_ms;
   timings_.added = statistics.added;
 
   Clock::time_point stage = Clock::now();
-  std::vector<cv::Point2f> raw;
-  for (const Track& t : tracker_.tracks()) raw.push_back(t.pixel);
-  std::vector<Eigen::Vector2d> pixels = baseUndistorter_.undistort(raw);
+  raw_.clear();
+  for (const Track& t : tracker_.tracks()) raw_.push_back(t.pixel);
+  pixels_ = baseUndistorter_.undistort(raw_);
   timings_.undistort_ms = millisecondsSince(stage);
 
   stage = Clock::now();
-  if (options_.fundamentalCheck && (timings_.rejected = rejectOutliers(tracker_.tracks(), pixels)) > 0) {
-    raw.clear();
-    for (const Track& t : tracker_.tracks()) raw.push_back(t.pixel);
-    pixels = baseUndistorter_.undistort(raw);
+  if (options_.fundamentalCheck && (timings_.rejected = rejectOutliers(tracker_.tracks(), pixels_)) > 0) {
+    raw_.clear();
+    for (const Track& t : tracker_.tracks()) raw_.push_back(t.pixel);
+    pixels_ = baseUndistorter_.undistort(raw_);
   }
   timings_.track_ms += millisecondsSince(stage);
   const std::vector<Track>& tracks = tracker_.tracks();
@@ -99,27 +99,44 @@ FrameObservations ImageFrontEnd::process(const StereoFrame& frame) {
 
   FrameObservations observations;
   observations.time_s = frame.time_s;
-  std::vector<int> ids;
+  ids_.clear();
   previousPixel_.clear();
   for (std::size_t i = 0; i < tracks.size(); ++i) {
-    ids.push_back(tracks[i].id);
-    observations.observations.push_back({tracks[i].id, 0, pixels[i]});
-    previousPixel_[tracks[i].id] = pixels[i];
+    ids_.push_back(tracks[i].id);
+    observations.observations.push_back({tracks[i].id, 0, pixels_[i]});
+    previousPixel_[tracks[i].id] = pixels_[i];
   }
+  secondaryImages_.assign(frame.images.begin() + 1, frame.images.end());
+  matched_ = false;
+  timings_.total_ms = millisecondsSince(start);
+  return observations;
+}
 
-  stage = Clock::now();
+std::vector<Observation> ImageFrontEnd::matchAcrossRig() {
+  if (matched_) throw Error("image front end: matchAcrossRig() runs once per tracked frame, after track()");
+  matched_ = true;
+  const Clock::time_point start = Clock::now();
+  std::vector<Observation> observations;
   std::unordered_set<int> matchedSomewhere;
   for (std::size_t k = 0; k < matchers_.size(); ++k) {
     // KLT compares raw intensities: the cameras' exposures must agree first.
-    const KltImage secondary = makeKltImage(withBrightnessOf(frame.images[k + 1], frame.images[0]), pyramid_);
-    for (const StereoMatch& m : matchers_[k].match(base, secondary, ids, raw, pixels)) {
-      observations.observations.push_back({m.track, static_cast<int>(k + 1), m.pixel});
+    const KltImage secondary = makeKltImage(withBrightnessOf(secondaryImages_[k], base_.image), pyramid_);
+    for (const StereoMatch& m : matchers_[k].match(base_, secondary, ids_, raw_, pixels_)) {
+      observations.push_back({m.track, static_cast<int>(k + 1), m.pixel});
       matchedSomewhere.insert(m.track);
     }
   }
-  timings_.stereo_ms = millisecondsSince(stage);
+  secondaryImages_.clear();
+  timings_.stereo_ms = millisecondsSince(start);
+  timings_.total_ms += timings_.stereo_ms;
   timings_.stereoMatched = static_cast<int>(matchedSomewhere.size());
-  timings_.total_ms = millisecondsSince(start);
+  return observations;
+}
+
+FrameObservations ImageFrontEnd::process(const StereoFrame& frame) {
+  FrameObservations observations = track(frame);
+  const std::vector<Observation> secondary = matchAcrossRig();
+  observations.observations.insert(observations.observations.end(), secondary.begin(), secondary.end());
   return observations;
 }
 
@@ -130,6 +147,8 @@ void ImageFrontEnd::dropTracks(const std::vector<int>& trackIds) {
 
 void ImageFrontEnd::reset() {
   tracker_.reset();
+  secondaryImages_.clear();
+  matched_ = true;
   for (StereoMatcher& matcher : matchers_) matcher.reset();
   previousPixel_.clear();
 }

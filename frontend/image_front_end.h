@@ -28,13 +28,13 @@ struct ImageFrontEndOptions {
 struct FrontEndTimings {
   double detect_ms = 0.0;
   double track_ms = 0.0;      // base pyramid, KLT or descriptor matching, fundamental check
-  double stereo_ms = 0.0;     // secondary pyramids and matching (its own undistortion included)
+  double stereo_ms = 0.0;     // secondary pyramids and matching (its own undistortion included); 0 when not asked
   double undistort_ms = 0.0;  // base features
   double total_ms = 0.0;
   int tracked = 0;        // tracks continued from the previous frame (after the fundamental check)
   int added = 0;          // new tracks
   int rejected = 0;       // dropped by the fundamental check
-  int stereoMatched = 0;  // base tracks found in at least one secondary camera
+  int stereoMatched = 0;  // base tracks found in at least one secondary camera (when matched)
 };
 
 // From a rig's images to the observations the odometry consumes: features are
@@ -44,6 +44,15 @@ struct FrontEndTimings {
 class ImageFrontEnd {
  public:
   ImageFrontEnd(const Rig& rig, const std::vector<LensDistortion>& distortion, const ImageFrontEndOptions& options);
+  // The base camera alone: features tracked in time, all a frame's pose and the
+  // keyframe choice need.
+  FrameObservations track(const StereoFrame& frame);
+  // The last tracked frame's base tracks found in each secondary camera. Stereo
+  // matching costs as much as tracking, and the odometry needs it only for the
+  // frames it keeps (keyframes, initialisation frames), so it runs on request,
+  // once per frame.
+  std::vector<Observation> matchAcrossRig();
+  // track(frame) with matchAcrossRig() appended.
   FrameObservations process(const StereoFrame& frame);
   // The back end rejected these tracks as outliers: never report them again.
   void dropTracks(const std::vector<int>& trackIds);
@@ -65,6 +74,14 @@ class ImageFrontEnd {
   std::mt19937_64 rng_;
   std::unordered_map<int, Eigen::Vector2d> previousPixel_;  // undistorted base pixel by track, last frame
   FrontEndTimings timings_;
+  // The last tracked frame, kept for matchAcrossRig(): its base pyramid, its
+  // secondary images, and its tracks (id, raw and undistorted pixel).
+  KltImage base_;
+  std::vector<cv::Mat> secondaryImages_;
+  std::vector<int> ids_;
+  std::vector<cv::Point2f> raw_;
+  std::vector<Eigen::Vector2d> pixels_;
+  bool matched_ = true;  // matchAcrossRig() already ran for the last frame (or there is none)
 };
 
 }  // namespace lrsvo

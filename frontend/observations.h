@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -21,5 +22,9 @@ struct FrameObservations {
   double time_s = 0.0;
   std::vector<Observation> observations;
 };
+
+// The secondary cameras' observations of a frame given with its base
+// observations alone, fetched only when needed (Odometry::process).
+using SecondaryObservations = std::function<std::vector<Observation>()>;
 
 }  // namespace lrsvo

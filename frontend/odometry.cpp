@@ -19,6 +19,14 @@ int baseObservationCount(const FrameObservations& frame) {
   return count;
 }
 
+FrameObservations withSecondary(const FrameObservations& frame, const SecondaryObservations& secondary) {
+  if (!secondary) return frame;
+  FrameObservations whole = frame;
+  const std::vector<Observation> more = secondary();
+  whole.observations.insert(whole.observations.end(), more.begin(), more.end());
+  return whole;
+}
+
 }  // namespace
 
 Odometry::Odometry(Rig rig, OdometryOptions options)
@@ -29,14 +37,17 @@ Odometry::Odometry(Rig rig, OdometryOptions options)
   LongRangeInitializer{options_.initializer};  // validates its options now rather than at the first frame
 }
 
-std::vector<FrameEstimate> Odometry::process(const FrameObservations& frame) {
+std::vector<FrameEstimate> Odometry::process(const FrameObservations& frame, const SecondaryObservations& secondary) {
   const int index = nextFrame_++;
   if (tracking_) {
-    FrameEstimate estimate = track(frame, index);
+    FrameEstimate estimate = track(frame, index, secondary);
     if (estimate.tracked) return {estimate};
     // Lost: this frame starts the next initialisation.
   }
-  pending_.push_back(frame);
+  // Frames buffered at multiples of the step are the initialiser's samples (a
+  // failed attempt gives up a whole step, so they stay at multiples).
+  const bool sampled = pending_.size() % static_cast<std::size_t>(options_.initializationStep) == 0;
+  pending_.push_back(sampled ? withSecondary(frame, secondary) : frame);
   pendingIndices_.push_back(index);
   const int needed = (options_.initializer.frames - 1) * options_.initializationStep + 1;
   if (static_cast<int>(pending_.size()) < needed) return {};
@@ -161,7 +172,7 @@ bool Odometry::estimateFramePose(const FrameObservations& frame, int index, Eige
   return true;
 }
 
-FrameEstimate Odometry::track(const FrameObservations& frame, int index) {
+FrameEstimate Odometry::track(const FrameObservations& frame, int index, const SecondaryObservations& secondary) {
   FrameEstimate estimate = untracked(frame, index);
   auto start = std::chrono::steady_clock::now();
   Eigen::Isometry3d pose;
@@ -178,7 +189,7 @@ FrameEstimate Odometry::track(const FrameObservations& frame, int index) {
   if (keyframePolicy_.isKeyframe(last.observations, frame, framesSinceKeyframe_)) {
     estimate.keyframe = true;
     framesSinceKeyframe_ = 0;
-    window_.addKeyframe({index, pose, frame});
+    window_.addKeyframe({index, pose, withSecondary(frame, secondary)});
     start = std::chrono::steady_clock::now();
     window_.triangulateNewTracks();
     estimate.times.triangulate_ms = millisecondsSince(start);

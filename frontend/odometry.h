@@ -35,8 +35,11 @@ class Odometry {
 
   // Feeds the next frame; returns the estimates that became known, in frame
   // order: none while initialising, all buffered frames when it succeeds,
-  // otherwise this frame's.
-  std::vector<FrameEstimate> process(const FrameObservations& frame);
+  // otherwise this frame's. With `secondary`, `frame` may hold base
+  // observations alone: the secondary ones are fetched, at most once, only for
+  // a frame that is kept (a keyframe, or a frame the initialiser samples); the
+  // estimates are the same as for the whole frame.
+  std::vector<FrameEstimate> process(const FrameObservations& frame, const SecondaryObservations& secondary = {});
   // Estimates of frames still buffered at the end of a sequence (untracked).
   std::vector<FrameEstimate> finish();
   // Tracks the odometry rejected since the last call (wrong matches): the
@@ -50,7 +53,7 @@ class Odometry {
 
  private:
   std::vector<FrameEstimate> initialize();
-  FrameEstimate track(const FrameObservations& frame, int index);
+  FrameEstimate track(const FrameObservations& frame, int index, const SecondaryObservations& secondary);
   // Pose of a frame from its base observations of mapped points (nullopt-like: success flag).
   bool estimateFramePose(const FrameObservations& frame, int index, Eigen::Isometry3d& cameraFromWorld,
                          FrameEstimate& estimate);

@@ -208,10 +208,15 @@ class BaseEdge : public Edge {
   template <int A, int B>
   static void blockImpl(const BaseEdge& edge, double* block, int ld) {
     using Block = Eigen::Matrix<double, VertexType<A>::kDimension, VertexType<B>::kDimension>;
-    Eigen::Map<Block, 0, Eigen::OuterStride<>> target(block, Block::RowsAtCompileTime,
-                                                      Block::ColsAtCompileTime, Eigen::OuterStride<>(ld));
     // lazyProduct keeps small fixed-size blocks out of Eigen's large-matrix GEMM path.
-    target.noalias() += std::get<A>(edge.jacobians_).transpose().lazyProduct(std::get<B>(edge.jacobians_));
+    const auto product = std::get<A>(edge.jacobians_).transpose().lazyProduct(std::get<B>(edge.jacobians_));
+    if (ld == Block::RowsAtCompileTime) {  // a block stored on its own (BlockSystem): vectorised
+      Eigen::Map<Block>(block).noalias() += product;
+    } else {
+      Eigen::Map<Block, 0, Eigen::OuterStride<>>(block, Block::RowsAtCompileTime, Block::ColsAtCompileTime,
+                                                 Eigen::OuterStride<>(ld))
+          .noalias() += product;
+    }
   }
 
   template <int A>

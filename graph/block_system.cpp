@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <cstdint>
 #include <string>
 #include <unordered_map>
 
@@ -39,6 +39,7 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
   if (vertices_.empty()) throw Error("optimise: every vertex on an edge is fixed; nothing to optimise");
 
   std::unordered_map<const Vertex*, int>& index = blockIndex_;
+  index.reserve(vertices_.size());
   for (int i = 0; i < blockCount(); ++i) {
     index[vertices_[i]] = i;
     dims_.push_back(vertices_[i]->dimension());
@@ -46,47 +47,61 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
     scalarCount_ += dims_.back();
   }
 
-  std::map<std::pair<int, int>, int> blockIds;
+  // Block ids: the diagonal of vertex i is block i, the others follow in the
+  // order edges first join their two vertices.
+  const auto count = static_cast<std::int64_t>(blockCount());
+  std::unordered_map<std::int64_t, int> offDiagonalIds;
+  offDiagonalIds.reserve(graph.edges().size() * 2);
+  for (int i = 0; i < blockCount(); ++i) blocks_.push_back(Block{i, i, 0});
+  blockContributions_.resize(blocks_.size());
   gradientContributions_.resize(blockCount());
-  auto blockId = [&](int row, int col) {
-    auto [it, inserted] = blockIds.emplace(std::make_pair(row, col), static_cast<int>(blocks_.size()));
-    if (inserted) {
-      blocks_.push_back(Block{row, col, 0});
-      blockContributions_.emplace_back();
-    }
-    return it->second;
-  };
-  for (int i = 0; i < blockCount(); ++i) blockId(i, i);
+  std::vector<int> edgeBlocks;  // block index of each of an edge's vertices, -1 if inactive
   for (const auto& edgePtr : graph.edges()) {
     Edge* edge = edgePtr.get();
     edges_.push_back(edge);
+    edgeBlocks.assign(static_cast<std::size_t>(edge->vertexCount()), -1);
     for (int a = 0; a < edge->vertexCount(); ++a) {
-      auto ia = index.find(edge->vertex(a));
-      if (ia == index.end()) continue;
-      gradientContributions_[ia->second].push_back({edge, a, a});
+      const auto found = index.find(edge->vertex(a));
+      if (found != index.end()) edgeBlocks[static_cast<std::size_t>(a)] = found->second;
+    }
+    for (int a = 0; a < edge->vertexCount(); ++a) {
+      const int row = edgeBlocks[static_cast<std::size_t>(a)];
+      if (row < 0) continue;
+      gradientContributions_[row].push_back({edge, a, a});
       for (int b = 0; b < edge->vertexCount(); ++b) {
-        auto ib = index.find(edge->vertex(b));
-        if (ib == index.end() || ia->second > ib->second) continue;
-        if (ia->second == ib->second && a != b)
+        const int col = edgeBlocks[static_cast<std::size_t>(b)];
+        if (col < 0 || row > col) continue;
+        if (row == col && a != b)
           throw Error(std::string("edge ") + edge->typeTag() + " names vertex " +
                       std::to_string(edge->vertex(a)->id()) + " twice");
-        blockContributions_[blockId(ia->second, ib->second)].push_back({edge, a, b});
+        int id = row;
+        if (row != col) {
+          const auto [it, inserted] = offDiagonalIds.try_emplace(row * count + col, static_cast<int>(blocks_.size()));
+          if (inserted) {
+            blocks_.push_back(Block{row, col, 0});
+            blockContributions_.emplace_back();
+          }
+          id = it->second;
+        }
+        blockContributions_[static_cast<std::size_t>(id)].push_back({edge, a, b});
       }
     }
   }
 
-  std::size_t size = 0;
+  // Values laid out by row, then column.
   rowBlocks_.resize(blockCount());
   colBlocks_.resize(blockCount());
-  for (auto& [key, id] : blockIds) {  // map order: by row, then column
-    Block& block = blocks_[id];
-    block.offset = size;
-    size += static_cast<std::size_t>(dims_[block.row]) * dims_[block.col];
-    rowBlocks_[block.row].push_back(id);
-    colBlocks_[block.col].push_back(id);
+  for (int id = 0; id < static_cast<int>(blocks_.size()); ++id) rowBlocks_[blocks_[id].row].push_back(id);
+  std::size_t size = 0;
+  for (std::vector<int>& row : rowBlocks_) {
+    std::sort(row.begin(), row.end(), [&](int x, int y) { return blocks_[x].col < blocks_[y].col; });
+    for (int id : row) {
+      Block& block = blocks_[id];
+      block.offset = size;
+      size += static_cast<std::size_t>(dims_[block.row]) * dims_[block.col];
+      colBlocks_[block.col].push_back(id);  // rows visited in order: each column comes out sorted by row
+    }
   }
-  for (auto& column : colBlocks_)
-    std::sort(column.begin(), column.end(), [&](int x, int y) { return blocks_[x].row < blocks_[y].row; });
   values_.assign(size, 0.0);
   gradient_ = Eigen::VectorXd::Zero(scalarCount_);
   diagonal_ = Eigen::VectorXd::Zero(scalarCount_);

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -182,6 +183,58 @@ TEST(OdometryFlight, RecoversFromTrackingLossInANewSegment) {
       std::find_if(estimates.begin() + blackout, estimates.end(), [](const FrameEstimate& e) { return e.tracked; });
   ASSERT_NE(firstOfSecond, estimates.end());
   EXPECT_LT((firstOfSecond->cameraFromWorld.inverse().translation() - lastOfFirst).norm(), 1e-6);
+}
+
+// Given each frame's base observations and its secondary ones on request (as the
+// image front end gives them, stereo matching being costly), the odometry asks
+// only for the frames it keeps and estimates exactly what it does from whole frames.
+TEST(OdometryFlight, FetchesSecondaryObservationsOnlyForTheFramesItKeeps) {
+  SimulatedSequence sequence = odometryFlight(60.0, 4);
+  const int blackout = 45;  // a loss, so a second initialisation samples frames too
+  for (int i = blackout; i < blackout + 3; ++i) sequence.frames[i].observations.clear();
+  // Base observations first, as the split frames below will hold them.
+  for (FrameObservations& frame : sequence.frames)
+    std::stable_partition(frame.observations.begin(), frame.observations.end(),
+                          [](const Observation& o) { return o.camera == 0; });
+  const std::vector<FrameEstimate> whole = runOver(sequence.frames, sequence.rig, OdometryOptions{});
+
+  Odometry odometry(sequence.rig, OdometryOptions{});
+  std::vector<FrameEstimate> lazy;
+  std::set<int> fetched;
+  for (int i = 0; i < static_cast<int>(sequence.frames.size()); ++i) {
+    FrameObservations base{sequence.frames[i].time_s, {}};
+    std::vector<Observation> secondary;
+    for (const Observation& o : sequence.frames[i].observations)
+      (o.camera == 0 ? base.observations : secondary).push_back(o);
+    int calls = 0;
+    for (FrameEstimate& e : odometry.process(base, [&] {
+           ++calls;
+           return secondary;
+         }))
+      lazy.push_back(e);
+    EXPECT_LE(calls, 1) << "frame " << i;
+    if (calls > 0) fetched.insert(i);
+  }
+  for (FrameEstimate& e : odometry.finish()) lazy.push_back(e);
+
+  ASSERT_EQ(lazy.size(), whole.size());
+  int keyframes = 0;
+  for (std::size_t i = 0; i < whole.size(); ++i) {
+    EXPECT_EQ(lazy[i].tracked, whole[i].tracked) << "frame " << i;
+    EXPECT_EQ(lazy[i].keyframe, whole[i].keyframe) << "frame " << i;
+    EXPECT_EQ(lazy[i].segment, whole[i].segment) << "frame " << i;
+    EXPECT_TRUE(lazy[i].cameraFromWorld.matrix() == whole[i].cameraFromWorld.matrix()) << "frame " << i;
+    if (whole[i].keyframe) {
+      ++keyframes;
+      EXPECT_TRUE(fetched.count(static_cast<int>(i))) << "keyframe " << i << " without its secondary observations";
+    }
+    if (fetched.count(static_cast<int>(i))) {
+      EXPECT_TRUE(whole[i].keyframe || !whole[i].tracked) << "frame " << i;
+    }
+  }
+  EXPECT_EQ(whole.back().segment, 1);
+  EXPECT_GE(keyframes, 10);
+  EXPECT_LT(fetched.size(), 0.6 * static_cast<double>(whole.size()));
 }
 
 // A rig that does not move: no parallax, so the monocular start cannot
