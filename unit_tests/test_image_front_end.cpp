@@ -443,12 +443,16 @@ StereoFrame syntheticFrame(const WaveTexture& scene, int index, double shift, do
   return frame;
 }
 
-TEST(ImageFrontEnd, ObservesEveryTrackInTheBaseAndMatchesInTheSecondary) {
-  const Rig rig = horizontalRig(480, 360, 500.0, 0.5);
+// A front end for syntheticFrame()'s 480x360 rig (500 px focal length, 0.5 m baseline).
+ImageFrontEnd syntheticFrontEnd() {
   ImageFrontEndOptions options;
   options.tracker.targetFeatures = 150;
   options.stereo.minDepth_m = 5.0;
-  ImageFrontEnd frontEnd(rig, {LensDistortion{}, LensDistortion{}}, options);
+  return ImageFrontEnd(horizontalRig(480, 360, 500.0, 0.5), {LensDistortion{}, LensDistortion{}}, options);
+}
+
+TEST(ImageFrontEnd, ObservesEveryTrackInTheBaseAndMatchesInTheSecondary) {
+  ImageFrontEnd frontEnd = syntheticFrontEnd();
   const WaveTexture scene(480, 360, 8);
   const double disparity = 500.0 * 0.5 / 12.0;  // a plane 12 m away
   std::vector<int> dropped;
@@ -486,12 +490,8 @@ TEST(ImageFrontEnd, ObservesEveryTrackInTheBaseAndMatchesInTheSecondary) {
 // Stereo matching on request: track() gives the base camera alone, and
 // matchAcrossRig() then gives what process() would have added, once per frame.
 TEST(ImageFrontEnd, MatchesAcrossTheRigOnRequestAsProcessWould) {
-  const Rig rig = horizontalRig(480, 360, 500.0, 0.5);
-  ImageFrontEndOptions options;
-  options.tracker.targetFeatures = 150;
-  options.stereo.minDepth_m = 5.0;
-  ImageFrontEnd whole(rig, {LensDistortion{}, LensDistortion{}}, options);
-  ImageFrontEnd onRequest(rig, {LensDistortion{}, LensDistortion{}}, options);
+  ImageFrontEnd whole = syntheticFrontEnd();
+  ImageFrontEnd onRequest = syntheticFrontEnd();
   EXPECT_THROW(onRequest.matchAcrossRig(), Error);  // no frame tracked yet
   const WaveTexture scene(480, 360, 8);
   const double disparity = 500.0 * 0.5 / 12.0;
