@@ -98,7 +98,7 @@ void benchRun(BenchRunOptions o) {
     if (frame % 100 == 0) std::fprintf(stderr, "\rframe %d/%d  %.1f fps   ", frame, last, pipeline.totals().fps());
     if (next < o.checkpoints.size() && frame == o.checkpoints[next]) {
       RunTotals totals = pipeline.totals();
-      totals.sourceSeconds = sourceSeconds;
+      totals.sourceSeconds += sourceSeconds;
       std::fprintf(stderr, "\n");
       std::printf("\nafter %d frames: resident memory %.1f MiB, %d tracked, %d keyframes\n", frame, residentMiB(),
                   totals.tracked, totals.keyframes);

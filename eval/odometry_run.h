@@ -34,7 +34,7 @@ struct RunTotals {
   int segments = 0;
   double frontEndSeconds = 0.0;  // features, tracking, stereo matching
   double backEndSeconds = 0.0;   // initialisation, pose, triangulation, window adjustment
-  double sourceSeconds = 0.0;    // reading or rendering frames (not the odometry's)
+  double sourceSeconds = 0.0;    // reading or rendering frames (not the odometry's), deferred images included
   FrontEndTimings frontEnd;      // per-stage sums (ms) and counts
   StageTimes backEnd;            // per-stage sums (ms)
   double odometrySeconds() const { return frontEndSeconds + backEndSeconds; }

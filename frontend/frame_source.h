@@ -1,8 +1,12 @@
 #pragma once
 
 #include <array>
+#include <functional>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -12,12 +16,35 @@
 
 namespace lrsvo {
 
+// Images a source produces only when asked: a renderer's secondary cameras,
+// which the odometry needs only on the frames it keeps. Each is made on first
+// request and kept. Not thread-safe.
+class DeferredImages {
+ public:
+  using Produce = std::function<cv::Mat(int camera)>;
+  explicit DeferredImages(Produce produce) : produce_(std::move(produce)) {}
+  const cv::Mat& image(int camera);
+  bool made(int camera) const { return made_.contains(camera); }
+
+ private:
+  Produce produce_;
+  std::map<int, cv::Mat> made_;
+};
+
 // One time step of a camera rig: an 8-bit grey image per camera, as captured
 // (distorted by that camera's lens model, see FrameSource::distortion).
 struct StereoFrame {
   int index = 0;  // 0, 1, 2, ... in the order the source delivers them
   double time_s = 0.0;
-  std::vector<cv::Mat> images;  // [camera], CV_8UC1
+  std::vector<cv::Mat> images;  // [camera], CV_8UC1; empty for a camera the source defers
+  // Set by a source that defers some cameras' images (shared by copies of the
+  // frame; it may call back into the source, so use it while the source lives).
+  std::shared_ptr<DeferredImages> deferred;
+
+  int cameraCount() const { return static_cast<int>(images.size()); }
+  // Camera k's image: images[k], or the deferred one, made now if not yet.
+  // Throws lrsvo::Error for k outside [0, cameraCount()).
+  const cv::Mat& image(int camera) const;
 };
 
 // Radial-tangential lens distortion in OpenCV's order (k1, k2, p1, p2, k3);

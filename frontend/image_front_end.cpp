@@ -38,17 +38,21 @@ ImageFrontEnd::ImageFrontEnd(const Rig& rig, const std::vector<LensDistortion>& 
 }
 
 void ImageFrontEnd::checkFrame(const StereoFrame& frame) const {
-  if (frame.images.size() != rig_.cameras.size())
+  if (frame.cameraCount() != static_cast<int>(rig_.cameras.size()))
     throw Error("image front end: frame " + std::to_string(frame.index) + " has " +
-                std::to_string(frame.images.size()) + " images, the rig " + std::to_string(rig_.cameras.size()) +
+                std::to_string(frame.cameraCount()) + " images, the rig " + std::to_string(rig_.cameras.size()) +
                 " cameras");
-  for (std::size_t c = 0; c < frame.images.size(); ++c) {
-    const cv::Mat& image = frame.images[c];
-    if (image.cols != rig_.cameras[c].width || image.rows != rig_.cameras[c].height || image.type() != CV_8UC1)
-      throw Error("image front end: frame " + std::to_string(frame.index) + ", camera " + std::to_string(c) +
-                  ": expected an 8-bit grey image of " + std::to_string(rig_.cameras[c].width) + "x" +
-                  std::to_string(rig_.cameras[c].height));
-  }
+  // A deferred image is checked when matchAcrossRig() asks for it.
+  for (int c = 0; c < frame.cameraCount(); ++c)
+    if (!frame.deferred || !frame.images[c].empty()) checkImage(frame.index, c, frame.images[c]);
+}
+
+void ImageFrontEnd::checkImage(int frameIndex, int camera, const cv::Mat& image) const {
+  const Camera& expected = rig_.cameras[static_cast<std::size_t>(camera)];
+  if (image.cols != expected.width || image.rows != expected.height || image.type() != CV_8UC1)
+    throw Error("image front end: frame " + std::to_string(frameIndex) + ", camera " + std::to_string(camera) +
+                ": expected an 8-bit grey image of " + std::to_string(expected.width) + "x" +
+                std::to_string(expected.height));
 }
 
 int ImageFrontEnd::rejectOutliers(const std::vector<Track>& tracks, const std::vector<Eigen::Vector2d>& pixels) {
@@ -73,7 +77,9 @@ FrameObservations ImageFrontEnd::track(const StereoFrame& frame) {
   checkFrame(frame);
   timings_ = {};
   const Clock::time_point start = Clock::now();
-  base_ = makeKltImage(frame.images[0], pyramid_);
+  const cv::Mat& baseImage = frame.image(0);
+  checkImage(frame.index, 0, baseImage);
+  base_ = makeKltImage(baseImage, pyramid_);
   const double pyramid_ms = millisecondsSince(start);
   tracker_.track(base_);
   const TrackerStatistics& statistics = tracker_.lastStatistics();
@@ -106,7 +112,7 @@ FrameObservations ImageFrontEnd::track(const StereoFrame& frame) {
     observations.observations.push_back({tracks[i].id, 0, pixels_[i]});
     previousPixel_[tracks[i].id] = pixels_[i];
   }
-  secondaryImages_.assign(frame.images.begin() + 1, frame.images.end());
+  trackedFrame_ = frame;  // shares the images (and any deferred ones) with the caller's frame
   matched_ = false;
   timings_.total_ms = millisecondsSince(start);
   return observations;
@@ -120,13 +126,16 @@ std::vector<Observation> ImageFrontEnd::matchAcrossRig() {
   std::unordered_set<int> matchedSomewhere;
   for (std::size_t k = 0; k < matchers_.size(); ++k) {
     // KLT compares raw intensities: the cameras' exposures must agree first.
-    const KltImage secondary = makeKltImage(withBrightnessOf(secondaryImages_[k], base_.image), pyramid_);
+    const int camera = static_cast<int>(k + 1);
+    const cv::Mat& image = trackedFrame_.image(camera);
+    checkImage(trackedFrame_.index, camera, image);
+    const KltImage secondary = makeKltImage(withBrightnessOf(image, base_.image), pyramid_);
     for (const StereoMatch& m : matchers_[k].match(base_, secondary, ids_, raw_, pixels_)) {
       observations.push_back({m.track, static_cast<int>(k + 1), m.pixel});
       matchedSomewhere.insert(m.track);
     }
   }
-  secondaryImages_.clear();
+  trackedFrame_ = {};
   timings_.stereo_ms = millisecondsSince(start);
   timings_.total_ms += timings_.stereo_ms;
   timings_.stereoMatched = static_cast<int>(matchedSomewhere.size());
@@ -147,7 +156,7 @@ void ImageFrontEnd::dropTracks(const std::vector<int>& trackIds) {
 
 void ImageFrontEnd::reset() {
   tracker_.reset();
-  secondaryImages_.clear();
+  trackedFrame_ = {};
   matched_ = true;
   for (StereoMatcher& matcher : matchers_) matcher.reset();
   previousPixel_.clear();

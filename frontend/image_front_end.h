@@ -62,6 +62,7 @@ class ImageFrontEnd {
 
  private:
   void checkFrame(const StereoFrame& frame) const;
+  void checkImage(int frameIndex, int camera, const cv::Mat& image) const;
   // Drops the continued tracks that break the fundamental matrix; returns how many.
   int rejectOutliers(const std::vector<Track>& tracks, const std::vector<Eigen::Vector2d>& pixels);
 
@@ -74,10 +75,11 @@ class ImageFrontEnd {
   std::mt19937_64 rng_;
   std::unordered_map<int, Eigen::Vector2d> previousPixel_;  // undistorted base pixel by track, last frame
   FrontEndTimings timings_;
-  // The last tracked frame, kept for matchAcrossRig(): its base pyramid, its
-  // secondary images, and its tracks (id, raw and undistorted pixel).
+  // The last tracked frame, kept for matchAcrossRig(): its base pyramid, the
+  // frame itself (for its secondary images), and its tracks (id, raw and
+  // undistorted pixel).
   KltImage base_;
-  std::vector<cv::Mat> secondaryImages_;
+  StereoFrame trackedFrame_;
   std::vector<int> ids_;
   std::vector<cv::Point2f> raw_;
   std::vector<Eigen::Vector2d> pixels_;

@@ -69,14 +69,14 @@ EurocWriter::EurocWriter(const std::string& directory, const Rig& rig, double ra
 
 void EurocWriter::write(const StereoFrame& frame, const Eigen::Isometry3d& worldFromBase,
                         const std::vector<VertexStereoExtrinsic::Vector6>& trueExtrinsics) {
-  if (static_cast<int>(frame.images.size()) != cameras_ || static_cast<int>(trueExtrinsics.size()) != cameras_ - 1)
+  if (frame.cameraCount() != cameras_ || static_cast<int>(trueExtrinsics.size()) != cameras_ - 1)
     throw Error("EuRoC writer: a frame needs " + std::to_string(cameras_) + " images and " +
                 std::to_string(cameras_ - 1) + " extrinsics");
   const long long ns = nanoseconds(frame.time_s);
   const std::string file = std::to_string(ns) + ".png";
   for (int k = 0; k < cameras_; ++k) {
     const std::string path = cameraDirectory(directory_, k) + "/data/" + file;
-    if (!cv::imwrite(path, frame.images[k])) throw Error("EuRoC writer: cannot write " + path);
+    if (!cv::imwrite(path, frame.image(k))) throw Error("EuRoC writer: cannot write " + path);
     dataCsv_[k] << ns << ',' << file << '\n';
   }
   const Eigen::Vector3d p = worldFromBase.translation();

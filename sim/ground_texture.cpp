@@ -105,16 +105,15 @@ float GroundTexture::grey(const SurfaceHit& hit, double footprint_m) const {
 
 void GroundTexture::prepare(const std::vector<SurfaceHit>& hits, const std::vector<float>& footprints_m,
                             int threads) const {
-  std::vector<Eigen::Vector2d> points;
-  std::vector<float> footprints;
-  points.reserve(hits.size());
-  footprints.reserve(hits.size());
-  for (std::size_t i = 0; i < hits.size(); ++i) {
-    if (hits[i].tree || hits[i].building) continue;
-    points.push_back(hits[i].point.head<2>());
-    footprints.push_back(footprints_m[i]);
-  }
-  groundTexels_.require(points, footprints, threads);
+  groundTexels_.require(
+      hits.size(),
+      [&](std::size_t i, Eigen::Vector2d& xy, float& footprint_m) {
+        if (hits[i].tree || hits[i].building) return false;
+        xy = hits[i].point.head<2>();
+        footprint_m = footprints_m[i];
+        return true;
+      },
+      threads);
 }
 
 double GroundTexture::grain(double x, double y, double footprint_m) const {

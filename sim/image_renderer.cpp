@@ -17,6 +17,7 @@ namespace {
 
 constexpr std::uint64_t kGainStream = 0x6761696e, kNoiseStream = 0x6e6f6973;  // "gain", "nois"
 constexpr int kGainSinusoids = 3;
+constexpr int kRowsPerChunk = 8;  // ~100 chunks an image: both threads stay busy to the last row
 
 }  // namespace
 
@@ -50,15 +51,17 @@ double ImageRenderer::gain(double time_s, int cameraIndex) const {
 cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d& cameraFromWorld) const {
   const SurfaceView view(terrain_, camera, cameraFromWorld);
   const int width = camera.width;
-  std::vector<SurfaceHit> hits(static_cast<std::size_t>(width) * camera.height);
-  std::vector<float> footprints(hits.size());
+  std::vector<SurfaceHit>& hits = hits_;
+  std::vector<float>& footprints = footprints_;
+  hits.resize(static_cast<std::size_t>(width) * camera.height);
+  footprints.resize(hits.size());
   parallelFor(0, camera.height, options_.threads, [&](int v) {
     for (int u = 0; u < width; ++u) {
       const std::size_t i = static_cast<std::size_t>(v) * width + u;
       hits[i] = view.hit(u, v);
       footprints[i] = static_cast<float>(view.footprint(hits[i]));
     }
-  });
+  }, kRowsPerChunk);
   texture_.prepare(hits, footprints, options_.threads);
   cv::Mat scene(camera.height, width, CV_32FC1);
   parallelFor(0, camera.height, options_.threads, [&](int v) {
@@ -67,7 +70,7 @@ cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d
       const std::size_t i = static_cast<std::size_t>(v) * width + u;
       row[u] = texture_.grey(hits[i], footprints[i]);
     }
-  });
+  }, kRowsPerChunk);
   return scene;
 }
 

@@ -18,21 +18,34 @@ SimFrameSource::SimFrameSource(SimScenario scenario)
 }
 
 StereoFrame SimFrameSource::render(int index) const {
+  StereoFrame frame = renderBase(index);
+  for (int k = 1; k < frame.cameraCount(); ++k) frame.images[k] = renderCamera(index, k);
+  return frame;
+}
+
+std::optional<StereoFrame> SimFrameSource::next() {
+  if (next_ >= frameCount()) return std::nullopt;
+  const int index = next_++;
+  StereoFrame frame = renderBase(index);
+  frame.deferred = std::make_shared<DeferredImages>([this, index](int k) { return renderCamera(index, k); });
+  return frame;
+}
+
+StereoFrame SimFrameSource::renderBase(int index) const {
   if (index < 0 || index >= frameCount())
     throw Error("sim source: frame " + std::to_string(index) + " outside the flight's " + std::to_string(frameCount()) +
                 " frames");
   StereoFrame frame;
   frame.index = index;
   frame.time_s = truth_.times_s[index];
-  for (int k = 0; k < static_cast<int>(scenario_.rig.cameras.size()); ++k)
-    frame.images.push_back(
-        renderer_.render(scenario_.rig.cameras[k], trueCameraFromWorld(truth_, index, k), frame.time_s, index, k));
+  frame.images.resize(scenario_.rig.cameras.size());
+  frame.images[0] = renderCamera(index, 0);
   return frame;
 }
 
-std::optional<StereoFrame> SimFrameSource::next() {
-  if (next_ >= frameCount()) return std::nullopt;
-  return render(next_++);
+cv::Mat SimFrameSource::renderCamera(int index, int camera) const {
+  return renderer_.render(scenario_.rig.cameras[camera], trueCameraFromWorld(truth_, index, camera),
+                          truth_.times_s[index], index, camera);
 }
 
 GroundTruth SimFrameSource::groundTruth() const {

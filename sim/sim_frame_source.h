@@ -17,6 +17,9 @@ namespace lrsvo {
 // A synthetic flight rendered frame by frame on demand (nothing on disk, so
 // a 9600-frame flight streams): each camera's image from its true pose (the
 // base pose and, for camera k >= 1, its deformed extrinsic of that frame).
+// next() renders the base camera and defers the others until a frame's
+// image(k) asks (the odometry matches across the rig only on the frames it
+// keeps); the images do not depend on when or whether they are rendered.
 // rig() is the scenario's calibration; the images are undistorted.
 class SimFrameSource : public FrameSource {
  public:
@@ -32,12 +35,16 @@ class SimFrameSource : public FrameSource {
   // The true base pose (world-from-camera) and secondary extrinsics of every frame.
   GroundTruth groundTruth() const override;
 
-  // Renders any frame (0 <= index < frameCount()), independently of next().
+  // Renders every camera of any frame (0 <= index < frameCount()),
+  // independently of next().
   StereoFrame render(int index) const;
   const SimScenario& scenario() const { return scenario_; }
   const FlightTruth& truth() const { return truth_; }
 
  private:
+  StereoFrame renderBase(int index) const;  // images[0] only
+  cv::Mat renderCamera(int index, int camera) const;
+
   SimScenario scenario_;
   Terrain terrain_;
   GroundTexture texture_;

@@ -56,7 +56,10 @@ double buildingDepth(const Eigen::Vector3d& origin, const Eigen::Vector3d& direc
 }  // namespace
 
 SurfaceView::SurfaceView(const Terrain& terrain, const Camera& camera, const Eigen::Isometry3d& cameraFromWorld)
-    : terrain_(terrain), camera_(camera), cameraFromWorld_(cameraFromWorld) {
+    : terrain_(terrain),
+      camera_(camera),
+      meanFocal_(std::sqrt(camera.intrinsics.fx * camera.intrinsics.fy)),
+      cameraFromWorld_(cameraFromWorld) {
   const Eigen::Isometry3d worldFromCamera = cameraFromWorld.inverse();
   worldFromCameraRotation_ = worldFromCamera.linear();
   centre_ = worldFromCamera.translation();
@@ -170,7 +173,7 @@ double SurfaceView::footprint(const SurfaceHit& hit) const {
   const Eigen::Vector3d toHit = hit.point - centre_;
   const double range = toHit.norm();
   const double obliquity = std::max(0.25, std::abs(toHit.z()) / range);  // cosine of the incidence on level ground
-  return range / std::sqrt(camera_.intrinsics.fx * camera_.intrinsics.fy) / std::sqrt(obliquity);
+  return range / meanFocal_ / std::sqrt(obliquity);
 }
 
 }  // namespace lrsvo

@@ -43,6 +43,7 @@ class SurfaceView {
 
   const Terrain& terrain_;
   Camera camera_;
+  double meanFocal_;  // sqrt(fx fy), pixels
   Eigen::Matrix3d worldFromCameraRotation_;
   Eigen::Vector3d centre_;
   Eigen::Isometry3d cameraFromWorld_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -17,6 +18,23 @@ namespace {
 template <std::int64_t kDivisor>
 std::int64_t floorDivide(std::int64_t i) {
   return (i >= 0 ? i : i - (kDivisor - 1)) / kDivisor;
+}
+
+// std::floor and std::frexp without a call into libm (g++ calls it for both
+// unless the target has SSE4.1), bit for bit the same: these run several
+// times per pixel.
+double floorInline(double x) {
+  if (!(std::abs(x) < 0x1p62)) return std::floor(x);
+  const double truncated = static_cast<double>(static_cast<std::int64_t>(x));
+  return truncated > x ? truncated - 1.0 : truncated;
+}
+
+double frexpInline(double x, int* exponent) {
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  const auto biasedExponent = static_cast<int>(bits >> 52);  // >= 0x800 when negative
+  if (biasedExponent == 0 || biasedExponent >= 0x7ff) return std::frexp(x, exponent);  // 0, subnormal, inf, NaN, < 0
+  *exponent = biasedExponent - 1022;
+  return std::bit_cast<double>((bits & 0x000fffffffffffffULL) | (std::uint64_t{1022} << 52));
 }
 
 }  // namespace
@@ -41,14 +59,14 @@ inline void TexelTiles::levels(double footprint_m, int& level, double& fraction)
   // footprint = m 2^e base with m in [0.5, 1): level e - 1 (texel s <= footprint < 2 s), blended towards the
   // next level linearly in the footprint (exact powers of two, no logarithm per pixel).
   int exponent;
-  const double mantissa = std::frexp(footprint_m / base_m_, &exponent);
+  const double mantissa = frexpInline(footprint_m / base_m_, &exponent);
   level = exponent - 1, fraction = 2.0 * mantissa - 1.0;
   if (level < 0 || !(mantissa > 0.0)) level = 0, fraction = 0.0;  // finer than the base texel: the base level
   if (level > kLevels - 2 || std::isinf(mantissa)) level = kLevels - 2, fraction = 0.0;
 }
 
 inline std::int64_t TexelTiles::texelIndex(double coordinate, int level) const {
-  return static_cast<std::int64_t>(std::floor(coordinate * inverseTexel_[level]));
+  return static_cast<std::int64_t>(floorInline(coordinate * inverseTexel_[level]));
 }
 
 inline TexelTiles::Key TexelTiles::keyOf(double x, double y, int level) const {
@@ -57,32 +75,38 @@ inline TexelTiles::Key TexelTiles::keyOf(double x, double y, int level) const {
   return {floorDivide<kTile>(texelIndex(x, level)), floorDivide<kTile>(texelIndex(y, level)), level};
 }
 
-std::vector<TexelTiles::Key> TexelTiles::listKeys(const std::vector<Eigen::Vector2d>& points,
-                                                  const std::vector<float>& footprints_m, int threads) const {
+std::vector<TexelTiles::Key> TexelTiles::listKeys(std::size_t count, const PointSource& point, int threads) const {
   // Blocks of points in parallel; within a block, neighbouring pixels mostly
-  // share tiles (at one or two levels): skip keys among the last few listed.
+  // share tiles (at one or two levels): skip a key equal to the last one
+  // listed at its level.
   constexpr int kBlock = 4096;
-  const int blocks = static_cast<int>((points.size() + kBlock - 1) / kBlock);
+  const int blocks = static_cast<int>((count + kBlock - 1) / kBlock);
   std::vector<std::vector<Key>> perBlock(blocks);
   auto byLevelAndPosition = [](const Key& a, const Key& b) {
     return std::tie(a.level, a.ty, a.tx) < std::tie(b.level, b.ty, b.tx);
   };
   parallelFor(0, blocks, threads, [&](int b) {
     std::vector<Key>& wanted = perBlock[b];
-    const std::size_t end = std::min(points.size(), static_cast<std::size_t>(b + 1) * kBlock);
+    std::array<Key, kLevels> lastListed;
+    lastListed.fill(Key{0, 0, -1});
+    const std::size_t end = std::min(count, static_cast<std::size_t>(b + 1) * kBlock);
+    Eigen::Vector2d xy;
+    float footprint;
     for (std::size_t i = static_cast<std::size_t>(b) * kBlock; i < end; ++i) {
+      if (!point(i, xy, footprint)) continue;
       int level;
       double fraction;
-      levels(footprints_m[i], level, fraction);
+      levels(footprint, level, fraction);
       for (int l = level; l <= level + (fraction > 0.0); ++l) {
-        const Key key = keyOf(points[i].x(), points[i].y(), l);
-        const auto recent = wanted.end() - std::min<std::ptrdiff_t>(4, static_cast<std::ptrdiff_t>(wanted.size()));
-        if (std::find(recent, wanted.end(), key) == wanted.end()) wanted.push_back(key);
+        const Key key = keyOf(xy.x(), xy.y(), l);
+        if (key == lastListed[l]) continue;
+        wanted.push_back(key);
+        lastListed[l] = key;
       }
     }
     std::sort(wanted.begin(), wanted.end(), byLevelAndPosition);
     wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
-  });
+  }, 1);
   std::vector<Key> keys;
   for (const std::vector<Key>& block : perBlock) keys.insert(keys.end(), block.begin(), block.end());
   std::sort(keys.begin(), keys.end(), byLevelAndPosition);
@@ -93,8 +117,19 @@ std::vector<TexelTiles::Key> TexelTiles::listKeys(const std::vector<Eigen::Vecto
 void TexelTiles::require(const std::vector<Eigen::Vector2d>& points, const std::vector<float>& footprints_m,
                          int threads) {
   if (points.size() != footprints_m.size()) throw Error("texel tiles: one footprint per point needed");
+  require(
+      points.size(),
+      [&](std::size_t i, Eigen::Vector2d& xy, float& footprint_m) {
+        xy = points[i];
+        footprint_m = footprints_m[i];
+        return true;
+      },
+      threads);
+}
+
+void TexelTiles::require(std::size_t count, const PointSource& point, int threads) {
   ++images_;
-  const std::vector<Key> keys = listKeys(points, footprints_m, threads);
+  const std::vector<Key> keys = listKeys(count, point, threads);
   std::vector<Tile*> missing;
   std::vector<Key> missingKeys;
   for (const Key& key : keys) {
@@ -115,7 +150,7 @@ void TexelTiles::require(const std::vector<Eigen::Vector2d>& points, const std::
       for (int u = 0; u <= kTile; ++u)
         texels[v * (kTile + 1) + u] =
             function_(static_cast<double>(key.tx * kTile + u) * s, static_cast<double>(key.ty * kTile + v) * s, s);
-  });
+  }, 1);
   std::erase_if(tiles_, [&](const auto& entry) { return entry.second->lastUsed <= images_ - keep_; });
   layOut(keys);
 }
@@ -143,7 +178,7 @@ void TexelTiles::layOut(const std::vector<Key>& keys) {
 
 inline float TexelTiles::bilinear(double x, double y, int level) const {
   const double gx = x * inverseTexel_[level], gy = y * inverseTexel_[level];
-  const double fx = std::floor(gx), fy = std::floor(gy);
+  const double fx = floorInline(gx), fy = floorInline(gy);
   const auto ix = static_cast<std::int64_t>(fx), iy = static_cast<std::int64_t>(fy);
   const std::int64_t tx = floorDivide<kTile>(ix), ty = floorDivide<kTile>(iy);
   const LevelGrid& grid = grids_[level];

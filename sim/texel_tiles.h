@@ -29,10 +29,17 @@ class TexelTiles {
   // Throws lrsvo::Error on a non-positive base texel or keepImages < 1.
   TexelTiles(Function function, double baseTexel_m, int keepImages = 8);
 
+  // Point i of `count` to be sampled: fills its (x, y) and footprint and
+  // returns true, or returns false when it will not be sampled. Called from
+  // up to `threads` threads at once.
+  using PointSource = std::function<bool(std::size_t i, Eigen::Vector2d& xy, float& footprint_m)>;
+
   // Fills every tile that sample() will read for these points (x, y) and
   // footprints, on up to `threads` threads; tiles no image has read for
   // keepImages calls are dropped. Not safe while another thread samples.
   void require(const std::vector<Eigen::Vector2d>& points, const std::vector<float>& footprints_m, int threads);
+  // The same for points read through `point` (no copy of them needed).
+  void require(std::size_t count, const PointSource& point, int threads);
   // The texture at (x, y) for a pixel footprint; (x, y, footprint) must have
   // been passed to the last require(). Safe on many threads at once.
   float sample(double x, double y, double footprint_m) const;
@@ -63,8 +70,7 @@ class TexelTiles {
   void levels(double footprint_m, int& level, double& fraction) const;
   std::int64_t texelIndex(double coordinate, int level) const;
   Key keyOf(double x, double y, int level) const;
-  std::vector<Key> listKeys(const std::vector<Eigen::Vector2d>& points, const std::vector<float>& footprints_m,
-                            int threads) const;
+  std::vector<Key> listKeys(std::size_t count, const PointSource& point, int threads) const;
   void layOut(const std::vector<Key>& keys);
   float bilinear(double x, double y, int level) const;
 

@@ -346,15 +346,25 @@ TEST(SimFrameSource, DeliversEveryFrameWithItsTimeAndTheTruth) {
     EXPECT_EQ(frame->index, i);
     EXPECT_DOUBLE_EQ(frame->time_s, i / 30.0);
     EXPECT_DOUBLE_EQ(truth.poses[i].time_s, i / 30.0);
-    ASSERT_EQ(frame->images.size(), 2u);
+    ASSERT_EQ(frame->cameraCount(), 2);
     EXPECT_EQ(frame->images[0].type(), CV_8UC1);
-    EXPECT_EQ(frame->images[1].size(), cv::Size(160, 120));
+    // The secondary image is rendered when first asked for, then kept; it is
+    // the image render() gives.
+    ASSERT_TRUE(frame->deferred);
+    EXPECT_TRUE(frame->images[1].empty());
+    EXPECT_FALSE(frame->deferred->made(1));
+    const cv::Mat& secondary = frame->image(1);
+    EXPECT_TRUE(frame->deferred->made(1));
+    EXPECT_EQ(secondary.size(), cv::Size(160, 120));
+    EXPECT_EQ(frame->image(1).data, secondary.data);
+    EXPECT_EQ(cv::norm(secondary, source.render(i).images[1], cv::NORM_INF), 0.0);
+    EXPECT_THROW(frame->image(2), Error);
     // 100 m up, 20 m/s along world x.
     EXPECT_NEAR(truth.poses[i].worldFromCamera.translation().x(), 20.0 * i / 30.0, 1e-6);
     EXPECT_NEAR(truth.poses[i].worldFromCamera.translation().z(), 100.0, 1e-6);
     EXPECT_TRUE(truth.poses[i].worldFromCamera.isApprox(source.truth().cameraFromWorld[i].inverse(), 1e-12));
     EXPECT_LT((truth.extrinsics[i][0] - source.rig().extrinsics[0]).cwiseAbs().maxCoeff(), 0.01);
-    EXPECT_GT(cv::norm(frame->images[0], frame->images[1], cv::NORM_L1), 0.0);
+    EXPECT_GT(cv::norm(frame->images[0], secondary, cv::NORM_L1), 0.0);
   }
   EXPECT_FALSE(source.next().has_value());
   EXPECT_THROW(source.render(4), Error);

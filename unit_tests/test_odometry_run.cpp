@@ -1,5 +1,6 @@
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -66,6 +67,35 @@ TEST(OdometryRunSim, ShortRenderedFlightIsTrackedToTheEnd) {
   const double distance = report.metrics["distance_m"].get<double>();
   EXPECT_NEAR(distance, 74.0 / 30.0 * 20.0, 0.5);
   EXPECT_LT(report.metrics["final_position_error_m"].get<double>(), 0.05 * distance);
+}
+
+// The sim source renders a frame's secondary image only when the odometry
+// asks for it (keyframes, initialisation): the run is the same, bit for bit,
+// as on frames rendered whole, with most secondary images never rendered.
+TEST(OdometryRunSim, DeferredSecondaryImagesGiveTheRunOfWholeFrames) {
+  SimScenario scenario = demoScenario();
+  scenario.rig = paperRig(0.7, 640, 480);
+  scenario.flight.altitude_m = 50.0;
+  constexpr int kFrames = 40;
+  SimFrameSource deferredSource(scenario);
+  const SimFrameSource wholeSource(scenario);
+  const RunOptions options;
+  OdometryPipeline deferred(deferredSource, options), whole(wholeSource, options);
+  int rendered = 0;
+  for (int i = 0; i < kFrames; ++i) {
+    const std::optional<StereoFrame> frame = deferredSource.next();
+    ASSERT_TRUE(frame.has_value());
+    deferred.process(*frame);
+    rendered += frame->deferred->made(1);
+    whole.process(wholeSource.render(i));
+  }
+  const RunResult a = deferred.finish(), b = whole.finish();
+  EXPECT_EQ(a.totals.tracked, kFrames);
+  EXPECT_GT(rendered, 0);
+  EXPECT_LT(rendered, kFrames * 3 / 4);
+  ASSERT_EQ(a.trajectory.size(), b.trajectory.size());
+  for (std::size_t i = 0; i < a.trajectory.size(); ++i)
+    EXPECT_TRUE(a.trajectory.worldFromCamera[i].matrix() == b.trajectory.worldFromCamera[i].matrix()) << "frame " << i;
 }
 
 }  // namespace
