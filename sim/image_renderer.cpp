@@ -55,22 +55,22 @@ cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d
   std::vector<float>& footprints = footprints_;
   hits.resize(static_cast<std::size_t>(width) * camera.height);
   footprints.resize(hits.size());
-  parallelFor(0, camera.height, options_.threads, [&](int v) {
+  parallelFor(0, camera.height, options_.threads, kRowsPerChunk, [&](int v) {
     for (int u = 0; u < width; ++u) {
       const std::size_t i = static_cast<std::size_t>(v) * width + u;
       hits[i] = view.hit(u, v);
       footprints[i] = static_cast<float>(view.footprint(hits[i]));
     }
-  }, kRowsPerChunk);
+  });
   texture_.prepare(hits, footprints, options_.threads);
   cv::Mat scene(camera.height, width, CV_32FC1);
-  parallelFor(0, camera.height, options_.threads, [&](int v) {
+  parallelFor(0, camera.height, options_.threads, kRowsPerChunk, [&](int v) {
     float* row = scene.ptr<float>(v);
     for (int u = 0; u < width; ++u) {
       const std::size_t i = static_cast<std::size_t>(v) * width + u;
       row[u] = texture_.grey(hits[i], footprints[i]);
     }
-  }, kRowsPerChunk);
+  });
   return scene;
 }
 

@@ -31,8 +31,9 @@ double floorInline(double x) {
 
 double frexpInline(double x, int* exponent) {
   const auto bits = std::bit_cast<std::uint64_t>(x);
-  const auto biasedExponent = static_cast<int>(bits >> 52);  // >= 0x800 when negative
-  if (biasedExponent == 0 || biasedExponent >= 0x7ff) return std::frexp(x, exponent);  // 0, subnormal, inf, NaN, < 0
+  // Sign and exponent: 0 for zero and subnormals, 0x7ff for inf and NaN, >= 0x800 when negative.
+  const auto biasedExponent = static_cast<int>(bits >> 52);
+  if (biasedExponent == 0 || biasedExponent >= 0x7ff) return std::frexp(x, exponent);
   *exponent = biasedExponent - 1022;
   return std::bit_cast<double>((bits & 0x000fffffffffffffULL) | (std::uint64_t{1022} << 52));
 }
@@ -85,7 +86,7 @@ std::vector<TexelTiles::Key> TexelTiles::listKeys(std::size_t count, const Point
   auto byLevelAndPosition = [](const Key& a, const Key& b) {
     return std::tie(a.level, a.ty, a.tx) < std::tie(b.level, b.ty, b.tx);
   };
-  parallelFor(0, blocks, threads, [&](int b) {
+  parallelFor(0, blocks, threads, 1, [&](int b) {
     std::vector<Key>& wanted = perBlock[b];
     std::array<Key, kLevels> lastListed;
     lastListed.fill(Key{0, 0, -1});
@@ -106,7 +107,7 @@ std::vector<TexelTiles::Key> TexelTiles::listKeys(std::size_t count, const Point
     }
     std::sort(wanted.begin(), wanted.end(), byLevelAndPosition);
     wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
-  }, 1);
+  });
   std::vector<Key> keys;
   for (const std::vector<Key>& block : perBlock) keys.insert(keys.end(), block.begin(), block.end());
   std::sort(keys.begin(), keys.end(), byLevelAndPosition);
@@ -141,7 +142,7 @@ void TexelTiles::require(std::size_t count, const PointSource& point, int thread
     }
     found->second->lastUsed = images_;
   }
-  parallelFor(0, static_cast<int>(missing.size()), threads, [&](int i) {
+  parallelFor(0, static_cast<int>(missing.size()), threads, 1, [&](int i) {
     const Key& key = missingKeys[i];
     const double s = texel_[key.level];
     std::vector<float>& texels = missing[i]->texels;
@@ -150,7 +151,7 @@ void TexelTiles::require(std::size_t count, const PointSource& point, int thread
       for (int u = 0; u <= kTile; ++u)
         texels[v * (kTile + 1) + u] =
             function_(static_cast<double>(key.tx * kTile + u) * s, static_cast<double>(key.ty * kTile + v) * s, s);
-  }, 1);
+  });
   std::erase_if(tiles_, [&](const auto& entry) { return entry.second->lastUsed <= images_ - keep_; });
   layOut(keys);
 }

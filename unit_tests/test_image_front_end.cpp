@@ -20,11 +20,12 @@
 #include "frontend/stereo_matcher.h"
 #include "frontend/undistortion.h"
 #include "graph/error.h"
+#include "unit_tests/shared_data.h"
 
 namespace lrsvo {
 namespace {
 
-const std::string kEuroc = LRSVO_SHARED_DATA "/euroc_v101_micro";
+using test::kEuroc;
 
 // A seeded band-limited texture, a sum of plane waves of periods 8-40 px in
 // random directions, that can be drawn shifted by any subpixel amount exactly

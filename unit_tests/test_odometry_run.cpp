@@ -11,11 +11,12 @@
 #include "frontend/euroc_reader.h"
 #include "sim/scenario.h"
 #include "sim/sim_frame_source.h"
+#include "unit_tests/shared_data.h"
 
 namespace lrsvo {
 namespace {
 
-const std::string kEuroc = LRSVO_SHARED_DATA "/euroc_v101_micro";
+using test::kEuroc;
 
 // Real EuRoC frames of a nearly still vehicle (~2 mm in 4.7 s): too little
 // parallax to initialise. The odometry must neither crash nor invent motion:

@@ -1,5 +1,3 @@
-#include <unistd.h>
-
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -12,6 +10,7 @@
 #include "eval/study.h"
 #include "eval/study_index.h"
 #include "graph/error.h"
+#include "unit_tests/temp_folder.h"
 
 namespace lrsvo {
 namespace {
@@ -23,13 +22,7 @@ std::string readText(const std::filesystem::path& file) {
   return text.str();
 }
 
-// A fresh, empty folder under the system's temporary directory, one per process.
-std::filesystem::path freshFolder(const std::string& name) {
-  const std::filesystem::path folder =
-      std::filesystem::temp_directory_path() / ("lrsvo_test_" + name + "_" + std::to_string(getpid()));
-  std::filesystem::remove_all(folder);
-  return folder;
-}
+using test::freshFolder;
 
 StudyReport sampleReport() {
   StudyReport report("sample", "Fig. 0", "A sample study");

@@ -1,11 +1,10 @@
-#include <unistd.h>
-
 #include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "eval/study.h"
+#include "unit_tests/temp_folder.h"
 
 namespace lrsvo {
 namespace {
@@ -69,13 +68,7 @@ TEST(StudyRuns, GeometryChecksMatchHandComputedValues) {
   EXPECT_NEAR(findStudy("triangulation").run(tinyRun()).checks()[0].ours, z - depth, 1e-5);
 }
 
-// A fresh, empty folder under the system's temporary directory, one per process.
-std::filesystem::path freshFolder(const std::string& name) {
-  const std::filesystem::path folder =
-      std::filesystem::temp_directory_path() / ("lrsvo_test_" + name + "_" + std::to_string(getpid()));
-  std::filesystem::remove_all(folder);
-  return folder;
-}
+using test::freshFolder;
 
 TEST(StudyRuns, PlotScriptsWriteAPngForEachStudy) {
   if (plottingPython().empty()) GTEST_SKIP() << "no python3 with matplotlib";

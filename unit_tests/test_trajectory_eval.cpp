@@ -1,5 +1,3 @@
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,16 +12,16 @@
 #include "eval/trajectory_association.h"
 #include "eval/trajectory_metrics.h"
 #include "graph/error.h"
+#include "unit_tests/temp_folder.h"
 
 namespace lrsvo {
 namespace {
 
 constexpr double kTight = 1e-9;
 
-std::filesystem::path freshFolder(const std::string& name) {
-  const std::filesystem::path folder =
-      std::filesystem::temp_directory_path() / ("lrsvo_test_" + name + "_" + std::to_string(getpid()));
-  std::filesystem::remove_all(folder);
+// An empty folder for a test's files.
+std::filesystem::path emptyFolder(const std::string& name) {
+  const std::filesystem::path folder = test::freshFolder(name);
   std::filesystem::create_directories(folder);
   return folder;
 }
@@ -232,7 +230,7 @@ TEST(TrajectoryEvalFiles, TumRoundTrip) {
         Eigen::Quaterniond(normal(random), normal(random), normal(random), normal(random)).normalized();
     written.add(1e9 + 0.05 * i, pose(q.matrix(), Eigen::Vector3d(normal(random), normal(random), normal(random))));
   }
-  const std::filesystem::path file = freshFolder("tum") / "poses.txt";
+  const std::filesystem::path file = emptyFolder("tum") / "poses.txt";
   writeTumTrajectory(file, written);
   EXPECT_EQ(detectPoseFileFormat(file), PoseFileFormat::kTum);
   const Trajectory read = readTumTrajectory(file);
@@ -245,7 +243,7 @@ TEST(TrajectoryEvalFiles, TumRoundTrip) {
 
 TEST(TrajectoryEvalFiles, KittiRoundTripWithAndWithoutTimes) {
   const Trajectory written = climbingTurn(20);
-  const std::filesystem::path folder = freshFolder("kitti");
+  const std::filesystem::path folder = emptyFolder("kitti");
   writeKittiTrajectory(folder / "poses.txt", written);
   std::ofstream(folder / "times.txt") << "0.5\n0.6\n" << std::string(18, '\n');
   EXPECT_EQ(detectPoseFileFormat(folder / "poses.txt"), PoseFileFormat::kKitti);
@@ -264,7 +262,7 @@ TEST(TrajectoryEvalFiles, KittiRoundTripWithAndWithoutTimes) {
 }
 
 TEST(TrajectoryEvalFiles, TumQuaternionIsNormalisedAndCommentsSkipped) {
-  const std::filesystem::path file = freshFolder("tum_norm") / "poses.txt";
+  const std::filesystem::path file = emptyFolder("tum_norm") / "poses.txt";
   std::ofstream(file) << "# t tx ty tz qx qy qz qw\n\n1.5 1 2 3 0 0 0 2  # scaled identity\n";
   const Trajectory t = readTumTrajectory(file);
   ASSERT_EQ(t.size(), 1u);
@@ -274,7 +272,7 @@ TEST(TrajectoryEvalFiles, TumQuaternionIsNormalisedAndCommentsSkipped) {
 
 // The message of the lrsvo::Error that reading `text` as `format` throws.
 std::string readError(const std::string& text, PoseFileFormat format) {
-  const std::filesystem::path file = freshFolder("bad") / "bad_poses.txt";
+  const std::filesystem::path file = emptyFolder("bad") / "bad_poses.txt";
   std::ofstream(file) << text;
   try {
     if (format == PoseFileFormat::kTum)
