@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -10,6 +9,7 @@
 
 #include "graph/error.h"
 #include "graph/parallel_for.h"
+#include "sim/inline_math.h"
 
 namespace lrsvo {
 namespace {
@@ -18,24 +18,6 @@ namespace {
 template <std::int64_t kDivisor>
 std::int64_t floorDivide(std::int64_t i) {
   return (i >= 0 ? i : i - (kDivisor - 1)) / kDivisor;
-}
-
-// std::floor and std::frexp without a call into libm (g++ calls it for both
-// unless the target has SSE4.1), bit for bit the same: these run several
-// times per pixel.
-double floorInline(double x) {
-  if (!(std::abs(x) < 0x1p62)) return std::floor(x);
-  const double truncated = static_cast<double>(static_cast<std::int64_t>(x));
-  return truncated > x ? truncated - 1.0 : truncated;
-}
-
-double frexpInline(double x, int* exponent) {
-  const auto bits = std::bit_cast<std::uint64_t>(x);
-  // Sign and exponent: 0 for zero and subnormals, 0x7ff for inf and NaN, >= 0x800 when negative.
-  const auto biasedExponent = static_cast<int>(bits >> 52);
-  if (biasedExponent == 0 || biasedExponent >= 0x7ff) return std::frexp(x, exponent);
-  *exponent = biasedExponent - 1022;
-  return std::bit_cast<double>((bits & 0x000fffffffffffffULL) | (std::uint64_t{1022} << 52));
 }
 
 }  // namespace

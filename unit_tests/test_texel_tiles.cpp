@@ -1,10 +1,15 @@
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "graph/error.h"
+#include "sim/inline_math.h"
 #include "sim/texel_tiles.h"
 
 namespace lrsvo {
@@ -49,6 +54,36 @@ TEST(TexelTiles, SamplingOutsideTheLastRequiredTilesThrows) {
 }
 
 TEST(TexelTiles, RejectsANonPositiveBaseTexel) { EXPECT_THROW(TexelTiles(affine, 0.0), Error); }
+
+// The renderer's inline floor and frexp give the library's results bit for
+// bit: zeros of both signs, subnormals, integers and halves, huge values,
+// infinities, NaN, and random values over every magnitude.
+TEST(InlineMath, FloorAndFrexpEqualTheLibrarysBitForBit) {
+  using Limits = std::numeric_limits<double>;
+  std::vector<double> values = {
+      0.0, 0.5, 1.0, 2.5, 0x1p62, 0x1p62 - 1024.0, 1e300, Limits::denorm_min(), Limits::min(), Limits::infinity()};
+  for (std::size_t i = 0, n = values.size(); i < n; ++i) values.push_back(-values[i]);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-1070, 1020);
+  std::uniform_real_distribution<double> texelIndex(-1e4, 1e4);
+  for (int i = 0; i < 100000; ++i) values.push_back(std::ldexp(mantissa(rng), exponent(rng)));
+  for (int i = 0; i < 100000; ++i) values.push_back(texelIndex(rng));
+  for (double x : values) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(floorInline(x)), std::bit_cast<std::uint64_t>(std::floor(x))) << x;
+    int expected = 0, actual = 0;
+    const double libraryMantissa = std::frexp(x, &expected);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(frexpInline(x, &actual)), std::bit_cast<std::uint64_t>(libraryMantissa))
+        << x;
+    if (std::isfinite(x)) {
+      EXPECT_EQ(actual, expected) << x;
+    }
+  }
+  const double nan = Limits::quiet_NaN();
+  int unused = 0;
+  EXPECT_TRUE(std::isnan(floorInline(nan)));
+  EXPECT_TRUE(std::isnan(frexpInline(nan, &unused)));
+}
 
 }  // namespace
 }  // namespace lrsvo
