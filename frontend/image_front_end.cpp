@@ -42,8 +42,9 @@ void ImageFrontEnd::checkFrame(const StereoFrame& frame) const {
     throw Error("image front end: frame " + std::to_string(frame.index) + " has " +
                 std::to_string(frame.cameraCount()) + " images, the rig " + std::to_string(rig_.cameras.size()) +
                 " cameras");
-  // A deferred image is checked when matchAcrossRig() asks for it.
-  for (int c = 0; c < frame.cameraCount(); ++c)
+  // The base image is checked when track() takes it, a deferred one when
+  // matchAcrossRig() asks for it.
+  for (int c = 1; c < frame.cameraCount(); ++c)
     if (!frame.deferred || !frame.images[c].empty()) checkImage(frame.index, c, frame.images[c]);
 }
 
@@ -75,10 +76,10 @@ int ImageFrontEnd::rejectOutliers(const std::vector<Track>& tracks, const std::v
 
 FrameObservations ImageFrontEnd::track(const StereoFrame& frame) {
   checkFrame(frame);
-  timings_ = {};
-  const Clock::time_point start = Clock::now();
   const cv::Mat& baseImage = frame.image(0);
   checkImage(frame.index, 0, baseImage);
+  timings_ = {};
+  const Clock::time_point start = Clock::now();
   base_ = makeKltImage(baseImage, pyramid_);
   const double pyramid_ms = millisecondsSince(start);
   tracker_.track(base_);

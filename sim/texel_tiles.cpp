@@ -97,19 +97,6 @@ std::vector<TexelTiles::Key> TexelTiles::listKeys(std::size_t count, const Point
   return keys;
 }
 
-void TexelTiles::require(const std::vector<Eigen::Vector2d>& points, const std::vector<float>& footprints_m,
-                         int threads) {
-  if (points.size() != footprints_m.size()) throw Error("texel tiles: one footprint per point needed");
-  require(
-      points.size(),
-      [&](std::size_t i, Eigen::Vector2d& xy, float& footprint_m) {
-        xy = points[i];
-        footprint_m = footprints_m[i];
-        return true;
-      },
-      threads);
-}
-
 void TexelTiles::require(std::size_t count, const PointSource& point, int threads) {
   ++images_;
   const std::vector<Key> keys = listKeys(count, point, threads);

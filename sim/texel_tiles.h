@@ -34,11 +34,9 @@ class TexelTiles {
   // up to `threads` threads at once.
   using PointSource = std::function<bool(std::size_t i, Eigen::Vector2d& xy, float& footprint_m)>;
 
-  // Fills every tile that sample() will read for these points (x, y) and
-  // footprints, on up to `threads` threads; tiles no image has read for
+  // Fills every tile that sample() will read for the `count` points that
+  // `point` gives, on up to `threads` threads; tiles no image has read for
   // keepImages calls are dropped. Not safe while another thread samples.
-  void require(const std::vector<Eigen::Vector2d>& points, const std::vector<float>& footprints_m, int threads);
-  // The same for points read through `point` (no copy of them needed).
   void require(std::size_t count, const PointSource& point, int threads);
   // The texture at (x, y) for a pixel footprint; (x, y, footprint) must have
   // been passed to the last require(). Safe on many threads at once.

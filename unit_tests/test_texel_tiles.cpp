@@ -24,6 +24,19 @@ float affine(double x, double y, double footprint_m) {
   return static_cast<float>(3.0 * x - 2.0 * y + 100.0 * footprint_m);
 }
 
+// Every one of these points will be sampled.
+void requireAll(TexelTiles& tiles, const std::vector<Eigen::Vector2d>& points, const std::vector<float>& footprints_m,
+                int threads) {
+  tiles.require(
+      points.size(),
+      [&](std::size_t i, Eigen::Vector2d& xy, float& footprint_m) {
+        xy = points[i];
+        footprint_m = footprints_m[i];
+        return true;
+      },
+      threads);
+}
+
 TEST(TexelTiles, SamplesReproduceAnAffineTextureAcrossTilesLevelsAndNegativeCoordinates) {
   TexelTiles tiles(affine, kBase_m);
   std::mt19937_64 rng(3);
@@ -34,7 +47,7 @@ TEST(TexelTiles, SamplesReproduceAnAffineTextureAcrossTilesLevelsAndNegativeCoor
     points.emplace_back(position(rng), position(rng));
     footprints.push_back(static_cast<float>(std::exp(logFootprint(rng))));
   }
-  tiles.require(points, footprints, 2);
+  requireAll(tiles, points, footprints, 2);
   for (std::size_t i = 0; i < points.size(); ++i) {
     // Footprints finer than the base texel read the base level.
     const double expected = affine(points[i].x(), points[i].y(), std::max<double>(footprints[i], kBase_m));
@@ -45,10 +58,10 @@ TEST(TexelTiles, SamplesReproduceAnAffineTextureAcrossTilesLevelsAndNegativeCoor
 
 TEST(TexelTiles, SamplingOutsideTheLastRequiredTilesThrows) {
   TexelTiles tiles(affine, kBase_m);
-  tiles.require({Eigen::Vector2d(0.1, 0.1)}, {0.02f}, 1);
+  requireAll(tiles, {Eigen::Vector2d(0.1, 0.1)}, {0.02f}, 1);
   EXPECT_NO_THROW(tiles.sample(0.1, 0.1, 0.02));
   EXPECT_THROW(tiles.sample(50.0, -50.0, 0.02), Error);  // far from any listed tile
-  tiles.require({Eigen::Vector2d(-30.0, 20.0)}, {0.02f}, 1);
+  requireAll(tiles, {Eigen::Vector2d(-30.0, 20.0)}, {0.02f}, 1);
   EXPECT_THROW(tiles.sample(0.1, 0.1, 0.02), Error);  // listed by the previous image only
   EXPECT_NEAR(tiles.sample(-30.0, 20.0, 0.02), affine(-30.0, 20.0, 0.02), 2e-3);
 }
