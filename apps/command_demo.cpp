@@ -19,6 +19,7 @@ namespace {
 struct DemoOptions {
   std::string source = "sim:demo";
   std::string out = "lrsvo_demo";
+  int first = 0;
   int frames = -1;
   bool noPlot = false;
   bool quiet = false;
@@ -50,6 +51,7 @@ void runDemo(const DemoOptions& o) {
   for (const Variant& variant : kVariants) {
     RunOptions options = o.settings.runOptions();
     options.odometry.extrinsicMode = variant.mode;
+    options.firstFrame = o.first;
     options.maxFrames = o.frames;
     options.outDir = std::filesystem::path(o.out) / variant.name;
     variants.push_back(options);
@@ -59,7 +61,7 @@ void runDemo(const DemoOptions& o) {
   std::vector<RunResult> runs;
   GroundTruth truth;
   auto header = [&](const std::string& name, int count, const Rig& rig) {
-    if (o.frames >= 0 && (count < 0 || o.frames < count)) count = o.frames;
+    count = framesInRun(count, variants.front());
     std::printf("lrsvo demo: %s, %d frames of %dx%d stereo (baseline %.2f m), the odometry three ways on the same %s\n",
                 name.c_str(), count, rig.cameras[0].width, rig.cameras[0].height, rig.extrinsics[0].head<3>().norm(),
                 o.featureLevel ? "observations" : "images");
@@ -105,6 +107,8 @@ void addDemoCommand(CLI::App& app) {
       "demo", "Render a synthetic long-range flight and run the odometry constrained, unconstrained and rigid on it");
   command->add_option("--source", options->source, "The flight (any `lrsvo run` source)")->capture_default_str();
   command->add_option("--out", options->out, "Output folder: one subfolder per variant")->capture_default_str();
+  command->add_option("--first", options->first, "Start at this frame of the flight (0 = its first)")
+      ->check(CLI::NonNegativeNumber);
   command->add_option("--frames", options->frames, "Stop after this many frames (default: the whole flight)");
   command->add_flag("--no-plot", options->noPlot, "Write tables and metrics.json only, no PNG");
   command->add_flag("--quiet", options->quiet, "No progress line");

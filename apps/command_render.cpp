@@ -1,4 +1,4 @@
-// `lrsvo render SCENARIO --out DIR [--frames N]`: renders a synthetic flight
+// `lrsvo render SCENARIO --out DIR [--first I] [--frames N]`: renders a synthetic flight
 // (sim/scenario.h: demo, paper or a YAML file) to images in the EuRoC layout,
 // with the ground truth beside them, so that any stereo VO can run on it.
 #include <algorithm>
@@ -17,6 +17,7 @@ namespace {
 struct RenderCommandOptions {
   std::string scenario;
   std::string out;
+  int first = 0;
   int frames = -1;
   int threads = 0;
 };
@@ -25,13 +26,15 @@ void runRender(const RenderCommandOptions& o) {
   SimScenario scenario = loadScenario(o.scenario);
   if (o.threads > 0) scenario.render.threads = o.threads;
   const SimFrameSource source(scenario);
-  const int frames = o.frames < 0 ? source.frameCount() : std::min(o.frames, source.frameCount());
+  const int available = std::max(0, source.frameCount() - o.first);
+  const int frames = o.frames < 0 ? available : std::min(o.frames, available);
   EurocWriter writer(o.out, source.rig(), scenario.flight.frameRate_hz / scenario.flight.frameStep);
   const FlightTruth& truth = source.truth();
   const auto start = std::chrono::steady_clock::now();
   double lastReport = -1.0;
   for (int i = 0; i < frames; ++i) {
-    writer.write(source.render(i), truth.cameraFromWorld[i].inverse(), truth.extrinsics[i]);
+    const int index = o.first + i;
+    writer.write(source.render(index), truth.cameraFromWorld[index].inverse(), truth.extrinsics[index]);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (elapsed - lastReport >= 1.0 || i + 1 == frames) {
       const double fps = (i + 1) / elapsed;
@@ -52,7 +55,10 @@ void add(CLI::App& app) {
   command->add_option("scenario", options->scenario, "demo, paper or a scenario YAML file (docs/simulator.md)")
       ->required();
   command->add_option("--out", options->out, "output directory")->required();
-  command->add_option("--frames", options->frames, "render only the first N frames")->check(CLI::NonNegativeNumber);
+  command->add_option("--first", options->first, "start at this frame of the flight (0 = its first)")
+      ->check(CLI::NonNegativeNumber);
+  command->add_option("--frames", options->frames, "render only N frames (default: to the end of the flight)")
+      ->check(CLI::NonNegativeNumber);
   command->add_option("--threads", options->threads, "rendering threads (default: the scenario's render.threads)")
       ->check(CLI::NonNegativeNumber);
   command->callback([options] { runRender(*options); });

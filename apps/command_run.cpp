@@ -15,6 +15,7 @@ namespace {
 struct RunCommandOptions {
   std::string source;
   std::string out;
+  int first = 0;
   int frames = -1;
   bool noPlot = false;
   bool quiet = false;
@@ -52,6 +53,7 @@ void printHeader(const std::string& name, int frames, const Rig& rig, const RunO
 
 void runCommand(const RunCommandOptions& o) {
   RunOptions options = o.settings.runOptions();
+  options.firstFrame = o.first;
   options.maxFrames = o.frames;
   options.outDir =
       o.out.empty() ? std::filesystem::path("lrsvo_runs") / folderName(o.source) : std::filesystem::path(o.out);
@@ -60,12 +62,12 @@ void runCommand(const RunCommandOptions& o) {
   GroundTruth truth;
   if (o.featureLevel) {
     FeatureLevelFlight flight = simulateFeatureLevel(o.source);
-    printHeader(flight.name, static_cast<int>(flight.frames.size()), flight.rig, options);
+    printHeader(flight.name, framesInRun(static_cast<int>(flight.frames.size()), options), flight.rig, options);
     run = std::move(runOdometry(flight.rig, flight.frames, flight.truth, {options}).front());
     truth = std::move(flight.truth);
   } else {
     std::unique_ptr<FrameSource> source = openSource(o.source);
-    printHeader(source->name(), source->frameCount(), source->rig(), options);
+    printHeader(source->name(), framesInRun(source->frameCount(), options), source->rig(), options);
     run = runOdometry(*source, options);
     truth = source->groundTruth();
   }
@@ -87,6 +89,8 @@ void addRunCommand(CLI::App& app) {
                    "euroc:DIR or kitti:DIR forces the layout")
       ->required();
   command->add_option("--out", options->out, "Output folder (default lrsvo_runs/<source>)");
+  command->add_option("--first", options->first, "Start at this frame of the source (0 = its first)")
+      ->check(CLI::NonNegativeNumber);
   command->add_option("--frames", options->frames, "Stop after this many frames (default: all)");
   command->add_flag("--no-plot", options->noPlot, "Write tables and metrics.json only, no PNG");
   command->add_flag("--quiet", options->quiet, "No progress line");

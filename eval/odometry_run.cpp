@@ -55,7 +55,7 @@ OdometryPipeline::OdometryPipeline(const Rig& rig, const std::vector<LensDistort
                                    const GroundTruth& truth, const RunOptions& options)
     : odometry_(std::make_unique<Odometry>(rig, options.odometry)),
       frontEnd_(std::make_unique<ImageFrontEnd>(rig, distortion, options.frontEnd)) {
-  if (!options.outDir.empty()) writer_ = std::make_unique<RunWriter>(options.outDir, rig, truth);
+  if (!options.outDir.empty()) writer_ = std::make_unique<RunWriter>(options.outDir, rig, truth, options.firstFrame);
 }
 
 OdometryPipeline::~OdometryPipeline() = default;
@@ -72,6 +72,12 @@ void OdometryPipeline::process(const StereoFrame& frame) {
     for (int k = 1; k < frame.cameraCount(); ++k) frame.image(k);
     deferredSeconds = secondsSince(produceStart);
     const auto matchStart = Clock::now();
+    // Matches are looked for around the S the odometry holds now; before it
+    // has one, around the calibration, widened to the rig's bounds.
+    if (odometry_->tracking())
+      frontEnd_->centreBandsOn(odometry_->window().extrinsicsAt(observations.time_s));
+    else
+      frontEnd_->centreBandsOnCalibration();
     std::vector<Observation> secondary = frontEnd_->matchAcrossRig();
     stereoSeconds = secondsSince(matchStart);
     pendingTimings_.back() = frontEnd_->lastTimings();
@@ -122,13 +128,20 @@ void OdometryPipeline::record(const std::vector<FrameEstimate>& estimates) {
   }
 }
 
+int framesInRun(int sourceFrames, const RunOptions& options) {
+  if (options.firstFrame < 0) throw Error("runOdometry: the first frame must be >= 0");
+  int count = sourceFrames < 0 ? -1 : std::max(0, sourceFrames - options.firstFrame);
+  if (options.maxFrames >= 0 && (count < 0 || options.maxFrames < count)) count = options.maxFrames;
+  return count;
+}
+
 std::vector<RunResult> runOdometry(FrameSource& source, const std::vector<RunOptions>& variants) {
   if (variants.empty()) throw Error("runOdometry: no variant to run");
   std::vector<std::unique_ptr<OdometryPipeline>> pipelines;
   for (const RunOptions& options : variants) pipelines.push_back(std::make_unique<OdometryPipeline>(source, options));
   const RunOptions& first = variants.front();
-  int frameCount = source.frameCount();
-  if (first.maxFrames >= 0 && (frameCount < 0 || first.maxFrames < frameCount)) frameCount = first.maxFrames;
+  const int frameCount = framesInRun(source.frameCount(), first);
+  source.skip(first.firstFrame);
 
   const auto start = Clock::now();
   double sourceSeconds = 0.0;
@@ -156,11 +169,11 @@ std::vector<RunResult> runOdometry(const Rig& rig, const std::vector<FrameObserv
   const std::vector<LensDistortion> none(rig.cameras.size());
   for (const RunOptions& options : variants) {
     OdometryPipeline pipeline(rig, none, truth, options);
-    int count = static_cast<int>(frames.size());
-    if (options.maxFrames >= 0) count = std::min(count, options.maxFrames);
+    const int count = framesInRun(static_cast<int>(frames.size()), options);
+    const int first = std::min(options.firstFrame, static_cast<int>(frames.size()));
     const auto start = Clock::now();
     for (int i = 0; i < count; ++i) {
-      pipeline.process(frames[static_cast<std::size_t>(i)]);
+      pipeline.process(frames[static_cast<std::size_t>(first + i)]);
       if (options.progress && (i + 1) % 100 == 0)
         showProgress(*options.progress, pipeline.totals(), secondsSince(start), count, false);
     }

@@ -21,7 +21,8 @@ class RunWriter;
 struct RunOptions {
   OdometryOptions odometry;
   ImageFrontEndOptions frontEnd;
-  int maxFrames = -1;                // < 0: every frame of the source
+  int firstFrame = 0;                // the source's frames before this one are skipped
+  int maxFrames = -1;                // < 0: every frame of the source (from firstFrame)
   std::filesystem::path outDir;      // empty: write nothing
   std::ostream* progress = nullptr;  // one updating line: frame, fps, ETA (of the first variant's options)
 };
@@ -77,6 +78,10 @@ class OdometryPipeline {
   std::deque<FrontEndTimings> pendingTimings_;  // wait with their frame while the odometry buffers it
   RunResult result_;
 };
+
+// How many frames a run over a source of `sourceFrames` frames (-1: not known)
+// processes, from options.firstFrame and options.maxFrames; -1 when not known.
+int framesInRun(int sourceFrames, const RunOptions& options);
 
 // Runs one pipeline over a source, or several over the same frames (each
 // frame read or rendered once); the source's time is added to every totals.

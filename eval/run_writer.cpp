@@ -23,8 +23,8 @@ nlohmann::json vectorJson(const VertexStereoExtrinsic::Vector6& v) {
 
 }  // namespace
 
-RunWriter::RunWriter(const std::filesystem::path& outDir, const Rig& rig, GroundTruth truth)
-    : rig_(rig), truth_(std::move(truth)) {
+RunWriter::RunWriter(const std::filesystem::path& outDir, const Rig& rig, GroundTruth truth, int firstFrame)
+    : rig_(rig), truth_(std::move(truth)), firstFrame_(firstFrame) {
   std::error_code error;
   std::filesystem::create_directories(outDir, error);
   if (error) throw Error("cannot create the output folder " + outDir.string() + ": " + error.message());
@@ -47,7 +47,8 @@ RunWriter::RunWriter(const std::filesystem::path& outDir, const Rig& rig, Ground
 }
 
 void RunWriter::write(const FrameEstimate& e, const FrontEndTimings& f) {
-  frames_ << e.frame << ',' << e.time_s << ',' << e.tracked << ',' << e.keyframe << ',' << e.segment << ','
+  const std::size_t frame = static_cast<std::size_t>(firstFrame_ + e.frame);
+  frames_ << frame << ',' << e.time_s << ',' << e.tracked << ',' << e.keyframe << ',' << e.segment << ','
           << e.observations << ',' << f.tracked << ',' << f.added << ',' << f.stereoMatched << ',' << e.mappedMatches
           << ',' << e.poseInliers << ',' << e.mapPoints << ',' << e.windowFrames << ',' << e.windowRmsError_px << ','
           << e.bundleIterations << ',' << f.detect_ms << ',' << f.track_ms << ',' << f.stereo_ms << ','
@@ -60,13 +61,12 @@ void RunWriter::write(const FrameEstimate& e, const FrontEndTimings& f) {
   trajectory_ << e.time_s << ' ' << t.x() << ' ' << t.y() << ' ' << t.z() << ' ' << q.x() << ' ' << q.y() << ' '
               << q.z() << ' ' << q.w() << '\n';
   for (std::size_t k = 0; k < e.extrinsics.size(); ++k) {
-    extrinsics_ << e.frame << ',' << e.time_s << ',' << k + 1;
+    extrinsics_ << frame << ',' << e.time_s << ',' << k + 1;
     for (int i = 0; i < 6; ++i) extrinsics_ << ',' << e.extrinsics[k][i];
-    const bool truthKnown = static_cast<std::size_t>(e.frame) < truth_.extrinsics.size() &&
-                            k < truth_.extrinsics[static_cast<std::size_t>(e.frame)].size();
+    const bool truthKnown = frame < truth_.extrinsics.size() && k < truth_.extrinsics[frame].size();
     for (int i = 0; i < 6; ++i) {
       extrinsics_ << ',';
-      if (truthKnown) extrinsics_ << truth_.extrinsics[static_cast<std::size_t>(e.frame)][k][i];
+      if (truthKnown) extrinsics_ << truth_.extrinsics[frame][k][i];
     }
     extrinsics_ << '\n';
   }

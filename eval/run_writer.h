@@ -14,15 +14,18 @@ namespace lrsvo {
 //  extrinsics.csv  per tracked frame and secondary camera, the estimated S and, when known, the true one;
 //  frames.csv      per frame: tracked, keyframe, segment, feature counts, window error, time per stage (ms);
 //  rig.json        the calibration and the tolerances (the box the bounded S lives in).
+// Frames are numbered as the source numbers them: the run's frame i is the
+// source's frame firstFrame + i (a run may start part-way, RunOptions::firstFrame).
 // Throws lrsvo::Error when the folder cannot be written.
 class RunWriter {
  public:
-  RunWriter(const std::filesystem::path& outDir, const Rig& rig, GroundTruth truth);
+  RunWriter(const std::filesystem::path& outDir, const Rig& rig, GroundTruth truth, int firstFrame = 0);
   void write(const FrameEstimate& estimate, const FrontEndTimings& frontEnd);
 
  private:
   Rig rig_;
   GroundTruth truth_;
+  int firstFrame_ = 0;
   std::ofstream trajectory_, extrinsics_, frames_;
 };
 

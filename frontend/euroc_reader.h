@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -35,6 +36,9 @@ class EurocSource : public FrameSource {
   const std::vector<LensDistortion>& distortion() const override { return distortion_; }
   int frameCount() const override { return static_cast<int>(frames_.size()); }
   std::optional<StereoFrame> next() override;
+  void skip(int count) override {
+    next_ = std::min(frames_.size(), next_ + static_cast<std::size_t>(std::max(count, 0)));
+  }
   GroundTruth groundTruth() const override { return truth_; }
 
  private:

@@ -23,6 +23,22 @@ std::vector<cv::Point2f> pixelsOf(const std::vector<Track>& tracks) {
   return pixels;
 }
 
+// Per axis, the median motion of the tracks that have one (age > 1 once
+// track() has aged them); zero when none has.
+cv::Point2f medianMotion(const std::vector<Track>& tracks) {
+  std::vector<float> x, y;
+  for (const Track& t : tracks) {
+    if (t.age <= 1) continue;
+    x.push_back(t.motion.x);
+    y.push_back(t.motion.y);
+  }
+  if (x.empty()) return {0.0f, 0.0f};
+  const auto middle = static_cast<std::ptrdiff_t>(x.size() / 2);
+  std::nth_element(x.begin(), x.begin() + middle, x.end());
+  std::nth_element(y.begin(), y.begin() + middle, y.end());
+  return {x[static_cast<std::size_t>(middle)], y[static_cast<std::size_t>(middle)]};
+}
+
 }  // namespace
 
 FeatureTracker::FeatureTracker(const FeatureTrackerOptions& options) : options_(options), detector_(options.detector) {
@@ -61,31 +77,42 @@ const std::vector<Track>& FeatureTracker::track(const KltImage& image) {
   return tracks_;
 }
 
+std::vector<cv::Point2f> FeatureTracker::predictedPixels() const {
+  const cv::Point2f typical = medianMotion(tracks_);
+  std::vector<cv::Point2f> predicted;
+  predicted.reserve(tracks_.size());
+  for (const Track& t : tracks_) predicted.push_back(t.pixel + (t.age > 1 ? t.motion : typical));
+  return predicted;
+}
+
 void FeatureTracker::followByKlt(const KltImage& image) {
   if (tracks_.empty()) return;
   const std::vector<cv::Point2f> points = pixelsOf(tracks_);
-  std::vector<cv::Point2f> positions = points;
+  std::vector<cv::Point2f> positions = predictedPixels();
   const std::vector<bool> found = trackKlt(previous_, image, points, positions, options_.klt);
   std::vector<Track> kept;
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
     if (!found[i]) continue;
     kept.push_back(tracks_[i]);
     kept.back().pixel = positions[i];
+    kept.back().motion = positions[i] - points[i];
   }
   tracks_ = std::move(kept);
 }
 
 // Each track takes the candidate with the nearest descriptor inside the search
-// radius when it passes the ratio test; a candidate claimed by several tracks
-// goes to the closest in descriptor distance. Matched candidates leave the pool.
+// radius around its predicted pixel when it passes the ratio test; a candidate
+// claimed by several tracks goes to the closest in descriptor distance.
+// Matched candidates leave the pool.
 void FeatureTracker::followByDescriptor(const DetectedFeatures& candidates) {
   const double radius2 = options_.descriptorSearch_px * options_.descriptorSearch_px;
+  const std::vector<cv::Point2f> predicted = predictedPixels();
   std::vector<int> bestCandidate(tracks_.size(), -1);
   std::vector<int> bestDistance(tracks_.size(), std::numeric_limits<int>::max());
   for (std::size_t t = 0; t < tracks_.size(); ++t) {
     int best = std::numeric_limits<int>::max(), second = std::numeric_limits<int>::max(), bestIndex = -1;
     for (int c = 0; c < static_cast<int>(candidates.points.size()); ++c) {
-      const cv::Point2f d = candidates.points[static_cast<std::size_t>(c)] - tracks_[t].pixel;
+      const cv::Point2f d = candidates.points[static_cast<std::size_t>(c)] - predicted[t];
       if (d.dot(d) > radius2) continue;
       const int distance =
           static_cast<int>(cv::norm(tracks_[t].descriptor, candidates.descriptors.row(c), cv::NORM_HAMMING));
@@ -113,6 +140,7 @@ void FeatureTracker::followByDescriptor(const DetectedFeatures& candidates) {
   for (std::size_t c = 0; c < owner.size(); ++c) {
     if (owner[c] < 0) continue;
     Track t = tracks_[static_cast<std::size_t>(owner[c])];
+    t.motion = candidates.points[c] - t.pixel;
     t.pixel = candidates.points[c];
     t.descriptor = candidates.descriptors.row(static_cast<int>(c)).clone();
     kept.push_back(std::move(t));

@@ -13,7 +13,7 @@ namespace lrsvo {
 // How the base camera's features are followed from frame to frame. The mode
 // follows the detector: "klt" (pyramidal Lucas-Kanade, forward-backward
 // checked) for detectors without descriptors (gftt, fast); "descriptor"
-// (ORB Hamming matching near the previous position, ratio test) for orb.
+// (ORB Hamming matching near the predicted position, ratio test) for orb.
 struct FeatureTrackerOptions {
   DetectorOptions detector;
   int targetFeatures = 300;  // top up with new features when fewer survive
@@ -22,7 +22,7 @@ struct FeatureTrackerOptions {
   // topping up the few lost every frame would cost more than the tracking.
   double topUpFraction = 0.1;
   KltOptions klt;
-  double descriptorSearch_px = 40.0;  // "descriptor": radius around the previous position
+  double descriptorSearch_px = 40.0;  // "descriptor": radius around the predicted position
   double descriptorRatio = 0.8;       // best distance below this times the second best
   int maxHamming = 64;                // "descriptor": worst accepted distance (of 256 bits)
 };
@@ -32,6 +32,11 @@ struct Track {
   int id = -1;
   cv::Point2f pixel;
   int age = 0;         // frames since it was detected (0 = new this frame)
+  // How far it moved from the previous frame (zero when new). The next frame
+  // looks for it there first: periodic texture (crop rows) makes KLT from
+  // zero motion lock onto the wrong row once the flow nears a row period, and
+  // a fast flow leaves a descriptor search radius around the old position.
+  cv::Point2f motion;
   cv::Mat descriptor;  // one row, "descriptor" mode only
 };
 
@@ -58,6 +63,9 @@ class FeatureTracker {
   void reset();
 
  private:
+  // Where each track should be in the next image: moved on by its last
+  // motion, or a new track by the median motion of the others.
+  std::vector<cv::Point2f> predictedPixels() const;
   void followByKlt(const KltImage& image);
   void followByDescriptor(const DetectedFeatures& candidates);
   void addNew(DetectedFeatures features, int wanted);

@@ -85,6 +85,12 @@ class FrameSource {
   virtual int frameCount() const = 0;
   // The next frame, or std::nullopt after the last.
   virtual std::optional<StereoFrame> next() = 0;
+  // Passes over the next `count` frames (fewer at the end) without delivering
+  // them; a source that can seek does it without reading or rendering them.
+  virtual void skip(int count) {
+    for (int i = 0; i < count && next(); ++i) {
+    }
+  }
   virtual GroundTruth groundTruth() const { return {}; }
 };
 

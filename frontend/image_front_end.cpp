@@ -31,6 +31,7 @@ ImageFrontEnd::ImageFrontEnd(const Rig& rig, const std::vector<LensDistortion>& 
     throw Error("image front end: " + std::to_string(rig.cameras.size()) + " cameras need as many lens models, got " +
                 std::to_string(distortion.size()));
   for (int k = 1; k <= rig.secondaryCount(); ++k) matchers_.emplace_back(rig, k, distortion, options.stereo);
+  centreBandsOnCalibration();
   // The base pyramid serves both tracking in time and stereo matching: its
   // border and depth must suit the larger window and the deeper pyramid.
   pyramid_.window_px = std::max(options.tracker.klt.window_px, options.stereo.klt.window_px);
@@ -150,6 +151,18 @@ FrameObservations ImageFrontEnd::process(const StereoFrame& frame) {
   return observations;
 }
 
+void ImageFrontEnd::centreBandsOn(const std::vector<VertexStereoExtrinsic::Vector6>& extrinsics) {
+  if (extrinsics.size() != matchers_.size())
+    throw Error("image front end: " + std::to_string(matchers_.size()) +
+                " secondary cameras need as many extrinsics, got " + std::to_string(extrinsics.size()));
+  for (std::size_t k = 0; k < matchers_.size(); ++k) matchers_[k].centreOn(extrinsics[k]);
+}
+
+void ImageFrontEnd::centreBandsOnCalibration() {
+  for (std::size_t k = 0; k < matchers_.size(); ++k)
+    matchers_[k].centreOn(rig_.extrinsics[k], matchers_[k].toleranceSpread_px());
+}
+
 void ImageFrontEnd::dropTracks(const std::vector<int>& trackIds) {
   tracker_.drop(trackIds);
   for (int id : trackIds) previousPixel_.erase(id);
@@ -160,6 +173,7 @@ void ImageFrontEnd::reset() {
   trackedFrame_ = {};
   matched_ = true;
   for (StereoMatcher& matcher : matchers_) matcher.reset();
+  centreBandsOnCalibration();
   previousPixel_.clear();
 }
 

@@ -54,9 +54,20 @@ class ImageFrontEnd {
   std::vector<Observation> matchAcrossRig();
   // track(frame) with matchAcrossRig() appended.
   FrameObservations process(const StereoFrame& frame);
+  // Where stereo matching looks: in each secondary camera, the band
+  // (StereoMatcherOptions::bandWidth_px) around the epipolar lines of
+  // extrinsics[k - 1], the odometry's current estimate of S. A rig flexing by
+  // its whole tolerance moves matches further off the calibrated lines than a
+  // band narrow enough to stay unambiguous on periodic texture.
+  void centreBandsOn(const std::vector<VertexStereoExtrinsic::Vector6>& extrinsics);
+  // Before S is estimated (the start, and after reset()): bands around the
+  // calibrated lines, widened to hold the matches of any rig inside its
+  // tolerance box (StereoMatcher::toleranceSpread_px).
+  void centreBandsOnCalibration();
   // The back end rejected these tracks as outliers: never report them again.
   void dropTracks(const std::vector<int>& trackIds);
-  // After tracking loss: forget every track; new ones get fresh ids.
+  // After tracking loss: forget every track (new ones get fresh ids), and
+  // centre the bands on the calibration.
   void reset();
   const FrontEndTimings& lastTimings() const { return timings_; }
 

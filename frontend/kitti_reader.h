@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@ class KittiSource : public FrameSource {
   const std::vector<LensDistortion>& distortion() const override { return distortion_; }
   int frameCount() const override { return static_cast<int>(times_.size()); }
   std::optional<StereoFrame> next() override;
+  void skip(int count) override { next_ = std::min(frameCount(), next_ + std::max(count, 0)); }
   GroundTruth groundTruth() const override { return truth_; }
 
  private:

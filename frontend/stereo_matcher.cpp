@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <unordered_set>
 
 #include "graph/error.h"
@@ -94,9 +95,6 @@ StereoMatcher::StereoMatcher(const Rig& rig, int camera, const std::vector<LensD
     throw Error("stereo matcher: need bandWidth_px > 0 and 0 < minDepth_m < maxDepth_m");
   if (options.searchPatch_px < 3 || options.searchLevel < 0)
     throw Error("stereo matcher: searchPatch_px must be >= 3 and searchLevel >= 0");
-  const Eigen::Isometry3d transform = secondaryFromBase(rig.extrinsics.at(static_cast<std::size_t>(camera - 1)));
-  rotation_ = transform.linear();
-  centre_ = -rotation_.transpose() * transform.translation();
   // The captured image's border, undistorted: a lens with barrel distortion
   // sees beyond the pinhole image's rectangle.
   std::vector<cv::Point2f> border;
@@ -111,6 +109,57 @@ StereoMatcher::StereoMatcher(const Rig& rig, int camera, const std::vector<LensD
     undistortedLow_ = undistortedLow_.cwiseMin(p);
     undistortedHigh_ = undistortedHigh_.cwiseMax(p);
   }
+  toleranceSpread_px_ = spreadOfToleranceBox(rig, camera);
+  centreOn(rig.extrinsics.at(static_cast<std::size_t>(camera - 1)));
+}
+
+void StereoMatcher::centreOn(const VertexStereoExtrinsic::Vector6& s, double widening_px) {
+  if (!(widening_px >= 0.0)) throw Error("stereo matcher: the band's widening must be >= 0");
+  const Eigen::Isometry3d transform = secondaryFromBase(s);
+  rotation_ = transform.linear();
+  centre_ = -rotation_.transpose() * transform.translation();
+  band_px_ = options_.bandWidth_px + widening_px;
+}
+
+// Each of the six numbers moved to either end of its tolerance shifts a match
+// across the calibrated line; the shifts of the six add up in the worst case.
+// Checked at the image's corners and centre, at the nearest and farthest depth.
+double StereoMatcher::spreadOfToleranceBox(const Rig& rig, int camera) {
+  const VertexStereoExtrinsic::Vector6 calibration = rig.extrinsics.at(static_cast<std::size_t>(camera - 1));
+  const double far_m = std::isfinite(options_.maxDepth_m) ? options_.maxDepth_m : 1e6;
+  const PinholeIntrinsics& k = base_.intrinsics;
+  const double w = base_.width - 1.0, h = base_.height - 1.0;
+  double worst = 0.0;
+  for (const Eigen::Vector2d& pixel : {Eigen::Vector2d(0, 0), Eigen::Vector2d(w, 0), Eigen::Vector2d(0, h),
+                                       Eigen::Vector2d(w, h), Eigen::Vector2d(w / 2, h / 2)}) {
+    const Eigen::Vector3d ray((pixel.x() - k.cx) / k.fx, (pixel.y() - k.cy) / k.fy, 1.0);
+    auto seen = [&](const VertexStereoExtrinsic::Vector6& s, double depth) -> std::optional<Eigen::Vector2d> {
+      const Eigen::Vector3d p = secondaryFromBase(s) * (depth * ray);
+      if (p.z() <= 0.0) return std::nullopt;
+      return project(secondary_.intrinsics, p);
+    };
+    const auto near = seen(calibration, options_.minDepth_m), far = seen(calibration, far_m);
+    if (!near || !far || (*far - *near).norm() < 1e-9) continue;
+    const Eigen::Vector2d direction = (*far - *near).normalized();
+    for (double depth : {options_.minDepth_m, far_m}) {
+      const auto centre = seen(calibration, depth);
+      double shift = 0.0;
+      for (int i = 0; i < 6; ++i) {
+        double largest = 0.0;
+        for (double sign : {-1.0, 1.0}) {
+          VertexStereoExtrinsic::Vector6 s = calibration;
+          s[i] += sign * rig.tolerance[i];
+          const auto moved = seen(s, depth);
+          if (!moved) continue;
+          const Eigen::Vector2d d = *moved - *centre;
+          largest = std::max(largest, std::abs(direction.x() * d.y() - direction.y() * d.x()));
+        }
+        shift += largest;
+      }
+      worst = std::max(worst, shift);
+    }
+  }
+  return worst;
 }
 
 StereoMatcher::Segment StereoMatcher::segmentOf(const Eigen::Vector2d& basePixel) const {
@@ -136,7 +185,7 @@ bool StereoMatcher::inBand(const Segment& segment, const Eigen::Vector2d& pixel)
   const Eigen::Vector2d offset = pixel - segment.start;
   const double along = segment.direction.dot(offset);
   const double across = segment.direction.x() * offset.y() - segment.direction.y() * offset.x();
-  const double band = options_.bandWidth_px;
+  const double band = band_px_;
   return std::abs(across) <= band && along >= -band && along <= segment.length + band;
 }
 
@@ -148,7 +197,7 @@ bool StereoMatcher::search(const KltImage& base, const KltImage& secondary, cons
   const std::vector<float> reference = referencePatch(base.level(level), baseRaw * scale, options_.searchPatch_px);
   if (reference.empty()) return false;
   const Eigen::Vector2d normal(-segment.direction.y(), segment.direction.x());
-  const int acrossSteps = static_cast<int>(std::floor(options_.bandWidth_px / step));
+  const int acrossSteps = static_cast<int>(std::floor(band_px_ / step));
   std::vector<Eigen::Vector2d> candidates;
   for (double along = 0.0; along <= segment.length; along += step)
     for (int across = -acrossSteps; across <= acrossSteps; ++across)

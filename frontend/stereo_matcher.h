@@ -16,9 +16,10 @@
 namespace lrsvo {
 
 // Matching across the rig inside a loosened epipolar band: the rig flexes, so
-// the true match may sit a few pixels off the calibrated epipolar line.
+// the true match may sit a few pixels off the epipolar line of the extrinsic
+// the band is centred on (the calibration, or the odometry's estimate of S).
 struct StereoMatcherOptions {
-  double bandWidth_px = 8.0;  // accepted distance either side of the calibrated epipolar line
+  double bandWidth_px = 8.0;  // accepted distance either side of that epipolar line
   double minDepth_m = 20.0;   // nearest depth searched (the largest disparity)
   double maxDepth_m = std::numeric_limits<double>::infinity();
   // KLT refinement; its forward-backward check is the left-right consistency
@@ -47,8 +48,17 @@ struct StereoMatch {
 // next frame shows nearly the same view): it stays a base-only track.
 class StereoMatcher {
  public:
+  // The band starts centred on the calibration, bandWidth_px wide.
   StereoMatcher(const Rig& rig, int camera, const std::vector<LensDistortion>& distortion,
                 const StereoMatcherOptions& options);
+  // Centres the band on the epipolar lines of extrinsic `s` (this camera's),
+  // bandWidth_px plus `widening_px` either side.
+  void centreOn(const VertexStereoExtrinsic::Vector6& s, double widening_px = 0.0);
+  // How far, at most over the image and the depth range, an extrinsic inside
+  // the rig's tolerance box moves a match across the calibrated epipolar
+  // line: the widening a band centred on the calibration needs to hold the
+  // match of any rig inside its bounds.
+  double toleranceSpread_px() const { return toleranceSpread_px_; }
   // `raw` and `undistorted` are the base features' pixels, one per id.
   std::vector<StereoMatch> match(const KltImage& base, const KltImage& secondary, const std::vector<int>& ids,
                                  const std::vector<cv::Point2f>& raw, const std::vector<Eigen::Vector2d>& undistorted);
@@ -66,14 +76,18 @@ class StereoMatcher {
     bool valid = false;
   };
   Segment segmentOf(const Eigen::Vector2d& basePixel) const;
+  // Worst across-line shift of the tolerance box's extrinsics (toleranceSpread_px()).
+  double spreadOfToleranceBox(const Rig& rig, int camera);
   bool inBand(const Segment& segment, const Eigen::Vector2d& pixel) const;
   // The best correlating raw position along the band, if any correlates well enough.
   bool search(const KltImage& base, const KltImage& secondary, const cv::Point2f& baseRaw, const Segment& segment,
               cv::Point2f& found) const;
 
   Camera base_, secondary_;
-  Eigen::Matrix3d rotation_;  // R_s
+  Eigen::Matrix3d rotation_;  // R_s of the extrinsic the band is centred on
   Eigen::Vector3d centre_;    // c
+  double band_px_ = 0.0;      // half-width of the band
+  double toleranceSpread_px_ = 0.0;
   Undistorter undistorter_;
   Eigen::Vector2d undistortedLow_, undistortedHigh_;  // the box holding the undistorted image
   StereoMatcherOptions options_;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
@@ -32,6 +33,7 @@ class SimFrameSource : public FrameSource {
   const std::vector<LensDistortion>& distortion() const override { return distortion_; }
   int frameCount() const override { return static_cast<int>(truth_.times_s.size()); }
   std::optional<StereoFrame> next() override;
+  void skip(int count) override { next_ = std::min(frameCount(), next_ + std::max(count, 0)); }
   // The true base pose (world-from-camera) and secondary extrinsics of every frame.
   GroundTruth groundTruth() const override;
 

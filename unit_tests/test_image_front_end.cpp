@@ -196,6 +196,65 @@ TEST(FeatureTracker, TopsUpOnlyOnceEnoughFeaturesAreMissing) {
   EXPECT_THROW(FeatureTracker{invalid}, Error);
 }
 
+TEST(FeatureTracker, KltStartsFromEachTracksLastMotion) {
+  // Without a pyramid KLT converges only from a guess a few pixels off. The
+  // texture accelerates to 20 px a frame; each track's last motion misses the
+  // next by 2 px, and a new track starts from the median motion of the others.
+  const WaveTexture scene(480, 240, 6);
+  FeatureTrackerOptions options;
+  options.targetFeatures = 120;
+  options.klt.levels = 0;
+  FeatureTracker tracker(options);
+  double shift = 0.0;
+  std::map<int, cv::Point2f> previous = byId(tracker.track(makeKltImage(scene.view(shift, 0.0), options.klt)));
+  for (int frame = 1; frame <= 10; ++frame) {
+    const double step = 2.0 * frame;
+    shift += step;
+    const std::map<int, cv::Point2f> now = byId(tracker.track(makeKltImage(scene.view(shift, 0.0), options.klt)));
+    // Tracks whose window stays inside the image.
+    const double stayed = static_cast<double>(std::count_if(previous.begin(), previous.end(), [&](const auto& entry) {
+      return entry.second.x + step <= 480 - 1 - 0.5 * options.klt.window_px;
+    }));
+    int followed = 0;
+    for (const auto& [id, pixel] : now) {
+      if (!previous.count(id)) continue;
+      ++followed;
+      EXPECT_NEAR(pixel.x - previous.at(id).x, step, 0.1) << "frame " << frame << ", track " << id;
+      EXPECT_NEAR(pixel.y - previous.at(id).y, 0.0, 0.1) << "frame " << frame << ", track " << id;
+    }
+    EXPECT_GE(followed, 0.9 * stayed) << "frame " << frame << ": " << step << " px";
+    previous = now;
+  }
+  for (const Track& t : tracker.tracks()) {
+    if (t.age > 0) {
+      EXPECT_NEAR(t.motion.x, 20.0, 0.1) << "track " << t.id;
+    }
+  }
+}
+
+TEST(FeatureTracker, DescriptorSearchStartsFromEachTracksLastMotion) {
+  // Motion growing by 10 px a frame to 50 px, beyond the 40 px search radius
+  // around the old position, 10 px from the predicted one.
+  const WaveTexture scene(640, 240, 7);
+  FeatureTrackerOptions options;
+  options.detector.name = "orb";
+  options.targetFeatures = 150;
+  FeatureTracker tracker(options);
+  double shift = 0.0;
+  std::map<int, cv::Point2f> previous = byId(tracker.track(makeKltImage(scene.view(shift, 0.0), options.klt)));
+  for (int frame = 1; frame <= 5; ++frame) {
+    const double step = 10.0 * frame;
+    shift += step;
+    const std::map<int, cv::Point2f> now = byId(tracker.track(makeKltImage(scene.view(shift, 0.0), options.klt)));
+    std::vector<double> errors;
+    for (const auto& [id, pixel] : now)
+      if (previous.count(id)) errors.push_back(cv::norm(pixel - previous.at(id) - cv::Point2f(step, 0.0)));
+    EXPECT_GE(errors.size(), 0.4 * static_cast<double>(previous.size())) << "frame " << frame << ": " << step << " px";
+    EXPECT_LT(median(errors), 1.0) << "frame " << frame;
+    previous = now;
+  }
+}
+
 TEST(FeatureTracker, DetectionIsSpreadAndKeepsAwayFromExistingTracks) {
   const cv::Mat image = WaveTexture(320, 240, 4).view(0, 0);
   DetectorOptions options;
@@ -283,6 +342,61 @@ TEST(StereoMatcher, RejectsMatchesOutsideTheBandOrDepthRange) {
   EXPECT_LE(scene.match(17.3, 0.0, options).size(), 0.02 * static_cast<double>(scene.features.size()));
 }
 
+// The roll of camera 1 that moves the image of a far point at the image
+// centre `dy` pixels down in the secondary image.
+VertexStereoExtrinsic::Vector6 rolledBy(const StereoCase& scene, double dy) {
+  VertexStereoExtrinsic::Vector6 s = scene.rig.extrinsics[0];
+  s[3] = std::atan(dy / scene.rig.cameras[0].intrinsics.fy);
+  if ((secondaryFromBase(s).linear() * Eigen::Vector3d::UnitZ()).y() < 0.0) s[3] = -s[3];
+  return s;
+}
+
+TEST(StereoMatcher, BandCentredOnTheFlexedRigFindsMatchesOffTheCalibratedLine) {
+  const StereoCase scene;
+  StereoMatcherOptions options;
+  options.minDepth_m = 5.0;
+  // The rig rolled: the matches lie 11 px off the calibrated line, outside its 8 px band.
+  StereoMatcher matcher(scene.rig, 1, scene.distortion, options);
+  const KltImage base = makeKltImage(scene.base, options.klt);
+  const KltImage secondary = makeKltImage(scene.scene.view(-17.3, 11.0), options.klt);
+  EXPECT_LE(matcher.match(base, secondary, scene.ids, scene.features, scene.pixels).size(),
+            0.02 * static_cast<double>(scene.features.size()));
+  matcher.reset();
+  matcher.centreOn(rolledBy(scene, 11.0));
+  const std::vector<StereoMatch> matches = matcher.match(base, secondary, scene.ids, scene.features, scene.pixels);
+  EXPECT_GE(matches.size(), 0.9 * scene.visible(17.3, 11.0, options.klt.window_px));
+  for (const StereoMatch& m : matches) {
+    const cv::Point2f& f = scene.features[static_cast<std::size_t>(m.track)];
+    EXPECT_NEAR(m.pixel.x(), f.x - 17.3, 0.2) << "track " << m.track;
+    EXPECT_NEAR(m.pixel.y(), f.y + 11.0, 0.2) << "track " << m.track;
+  }
+  EXPECT_THROW(matcher.centreOn(scene.rig.extrinsics[0], -1.0), Error);
+}
+
+TEST(StereoMatcher, ToleranceSpreadHoldsTheMatchesOfAnyRigInsideItsBox) {
+  const StereoCase scene;
+  StereoMatcherOptions options;
+  options.minDepth_m = 5.0;
+  StereoMatcher matcher(scene.rig, 1, scene.distortion, options);
+  // Rolling about the baseline by its 0.01 rad tolerance alone moves every
+  // match f * 0.01 = 4 px across the line; yaw and pitch add up to ~2 px at
+  // the corners, the 1 mm translations a few hundredths at 5 m.
+  const double focal = scene.rig.cameras[0].intrinsics.fy, roll = scene.rig.tolerance[3];
+  EXPECT_GE(matcher.toleranceSpread_px(), focal * roll);
+  EXPECT_LE(matcher.toleranceSpread_px(), 1.8 * focal * roll);
+  // A rig rolled by 90 % of its tolerance, plus 8 px of misalignment: outside
+  // the calibrated band, inside the band widened by the spread.
+  const double dy = options.bandWidth_px + 0.9 * focal * roll;
+  const KltImage base = makeKltImage(scene.base, options.klt);
+  const KltImage secondary = makeKltImage(scene.scene.view(-17.3, dy), options.klt);
+  EXPECT_LE(matcher.match(base, secondary, scene.ids, scene.features, scene.pixels).size(),
+            0.1 * static_cast<double>(scene.features.size()));
+  matcher.reset();
+  matcher.centreOn(scene.rig.extrinsics[0], matcher.toleranceSpread_px());
+  EXPECT_GE(matcher.match(base, secondary, scene.ids, scene.features, scene.pixels).size(),
+            0.9 * scene.visible(17.3, dy, options.klt.window_px));
+}
+
 TEST(StereoMatcher, FollowsLastFramesMatches) {
   const StereoCase scene;
   StereoMatcherOptions options;
@@ -362,6 +476,20 @@ TEST(EurocSource, ReadsTheMicroSequence) {
       1e-9));
 }
 
+TEST(EurocSource, SkipsFramesWithoutReadingThem) {
+  if (!std::filesystem::exists(kEuroc)) GTEST_SKIP() << "no " << kEuroc;
+  EurocSource whole(kEuroc), skipping(kEuroc);
+  for (int i = 0; i < 40; ++i) whole.next();
+  skipping.skip(40);
+  const std::optional<StereoFrame> expected = whole.next(), frame = skipping.next();
+  ASSERT_TRUE(frame.has_value());
+  EXPECT_EQ(frame->index, 40);
+  EXPECT_DOUBLE_EQ(frame->time_s, expected->time_s);
+  EXPECT_EQ(cv::norm(frame->images[1], expected->images[1], cv::NORM_INF), 0.0);
+  skipping.skip(1000);
+  EXPECT_FALSE(skipping.next().has_value());
+}
+
 TEST(EurocSource, ReportsWhatIsMissing) {
   const std::filesystem::path directory = std::filesystem::temp_directory_path() / "lrsvo_euroc_missing";
   std::filesystem::create_directories(directory / "mav0" / "cam0");
@@ -416,6 +544,9 @@ TEST(KittiSource, ReadsAWrittenSequence) {
     EXPECT_EQ(f->images[1].at<unsigned char>(5, 5), 10 * frame + 1);
   }
   EXPECT_FALSE(source->next().has_value());
+  const std::unique_ptr<FrameSource> skipping = openDatasetSource(directory.string());
+  skipping->skip(2);
+  EXPECT_EQ(skipping->next()->images[1].at<unsigned char>(5, 5), 21);
   const GroundTruth truth = source->groundTruth();
   ASSERT_EQ(truth.poses.size(), 3u);
   EXPECT_DOUBLE_EQ(truth.poses[2].worldFromCamera.translation().z(), 1.6);
@@ -542,6 +673,11 @@ TEST(ImageFrontEnd, RunsOnThePapersImageSize) {
   }
   std::printf("1280x960 front end, ms a frame: detect %.2f track %.2f stereo %.2f undistort %.2f total %.2f\n",
               sum.detect_ms, sum.track_ms, sum.stereo_ms, sum.undistort_ms, sum.total_ms);
+  // Before S is estimated the band is widened by the tolerance box's spread:
+  // at least the roll tolerance times the focal length (16.7 px).
+  const StereoMatcher matcher(rig, 1, {LensDistortion{}, LensDistortion{}}, StereoMatcherOptions{});
+  std::printf("paper rig: a band around the calibration is widened by %.1f px\n", matcher.toleranceSpread_px());
+  EXPECT_GE(matcher.toleranceSpread_px(), rig.cameras[0].intrinsics.fy * rig.tolerance[3]);
 }
 
 TEST(ImageFrontEnd, TracksTheEurocMicroSequence) {

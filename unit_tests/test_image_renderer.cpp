@@ -368,6 +368,15 @@ TEST(SimFrameSource, DeliversEveryFrameWithItsTimeAndTheTruth) {
   }
   EXPECT_FALSE(source.next().has_value());
   EXPECT_THROW(source.render(4), Error);
+
+  SimFrameSource skipping(tinyScenario());
+  skipping.skip(2);  // seeks: frames 0 and 1 are never rendered
+  const std::optional<StereoFrame> third = skipping.next();
+  ASSERT_TRUE(third.has_value());
+  EXPECT_EQ(third->index, 2);
+  EXPECT_EQ(cv::norm(third->images[0], source.render(2).images[0], cv::NORM_INF), 0.0);
+  skipping.skip(5);
+  EXPECT_FALSE(skipping.next().has_value());
 }
 
 TEST(SimFrameSource, EurocWriterLaysOutImagesCalibrationAndTruth) {
