@@ -124,7 +124,7 @@ void StereoMatcher::centreOn(const VertexStereoExtrinsic::Vector6& s, double wid
 // Each of the six numbers moved to either end of its tolerance shifts a match
 // across the calibrated line; the shifts of the six add up in the worst case.
 // Checked at the image's corners and centre, at the nearest and farthest depth.
-double StereoMatcher::spreadOfToleranceBox(const Rig& rig, int camera) {
+double StereoMatcher::spreadOfToleranceBox(const Rig& rig, int camera) const {
   const VertexStereoExtrinsic::Vector6 calibration = rig.extrinsics.at(static_cast<std::size_t>(camera - 1));
   const double far_m = std::isfinite(options_.maxDepth_m) ? options_.maxDepth_m : 1e6;
   const PinholeIntrinsics& k = base_.intrinsics;

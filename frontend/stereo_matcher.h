@@ -77,7 +77,7 @@ class StereoMatcher {
   };
   Segment segmentOf(const Eigen::Vector2d& basePixel) const;
   // Worst across-line shift of the tolerance box's extrinsics (toleranceSpread_px()).
-  double spreadOfToleranceBox(const Rig& rig, int camera);
+  double spreadOfToleranceBox(const Rig& rig, int camera) const;
   bool inBand(const Segment& segment, const Eigen::Vector2d& pixel) const;
   // The best correlating raw position along the band, if any correlates well enough.
   bool search(const KltImage& base, const KltImage& secondary, const cv::Point2f& baseRaw, const Segment& segment,
