@@ -61,7 +61,7 @@ void runDemo(const DemoOptions& o) {
   std::vector<RunResult> runs;
   GroundTruth truth;
   auto header = [&](const std::string& name, int count, const Rig& rig) {
-    count = framesInRun(count, variants.front());
+    count = framesInRun(count, o.first, o.frames);
     std::printf("lrsvo demo: %s, %d frames of %dx%d stereo (baseline %.2f m), the odometry three ways on the same %s\n",
                 name.c_str(), count, rig.cameras[0].width, rig.cameras[0].height, rig.extrinsics[0].head<3>().norm(),
                 o.featureLevel ? "observations" : "images");

@@ -1,13 +1,13 @@
 // `lrsvo render SCENARIO --out DIR [--first I] [--frames N]`: renders a synthetic flight
 // (sim/scenario.h: demo, paper or a YAML file) to images in the EuRoC layout,
 // with the ground truth beside them, so that any stereo VO can run on it.
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "apps/command.h"
+#include "eval/odometry_run.h"
 #include "sim/euroc_writer.h"
 #include "sim/sim_frame_source.h"
 
@@ -26,8 +26,7 @@ void runRender(const RenderCommandOptions& o) {
   SimScenario scenario = loadScenario(o.scenario);
   if (o.threads > 0) scenario.render.threads = o.threads;
   const SimFrameSource source(scenario);
-  const int available = std::max(0, source.frameCount() - o.first);
-  const int frames = o.frames < 0 ? available : std::min(o.frames, available);
+  const int frames = framesInRun(source.frameCount(), o.first, o.frames);
   EurocWriter writer(o.out, source.rig(), scenario.flight.frameRate_hz / scenario.flight.frameStep);
   const FlightTruth& truth = source.truth();
   const auto start = std::chrono::steady_clock::now();

@@ -62,12 +62,13 @@ void runCommand(const RunCommandOptions& o) {
   GroundTruth truth;
   if (o.featureLevel) {
     FeatureLevelFlight flight = simulateFeatureLevel(o.source);
-    printHeader(flight.name, framesInRun(static_cast<int>(flight.frames.size()), options), flight.rig, options);
+    printHeader(flight.name, framesInRun(static_cast<int>(flight.frames.size()), o.first, o.frames), flight.rig,
+                options);
     run = std::move(runOdometry(flight.rig, flight.frames, flight.truth, {options}).front());
     truth = std::move(flight.truth);
   } else {
     std::unique_ptr<FrameSource> source = openSource(o.source);
-    printHeader(source->name(), framesInRun(source->frameCount(), options), source->rig(), options);
+    printHeader(source->name(), framesInRun(source->frameCount(), o.first, o.frames), source->rig(), options);
     run = runOdometry(*source, options);
     truth = source->groundTruth();
   }

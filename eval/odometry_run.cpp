@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ostream>
+#include <string>
 
 #include "eval/run_writer.h"
 #include "frontend/odometry.h"
@@ -128,10 +129,10 @@ void OdometryPipeline::record(const std::vector<FrameEstimate>& estimates) {
   }
 }
 
-int framesInRun(int sourceFrames, const RunOptions& options) {
-  if (options.firstFrame < 0) throw Error("runOdometry: the first frame must be >= 0");
-  int count = sourceFrames < 0 ? -1 : std::max(0, sourceFrames - options.firstFrame);
-  if (options.maxFrames >= 0 && (count < 0 || options.maxFrames < count)) count = options.maxFrames;
+int framesInRun(int sourceFrames, int firstFrame, int maxFrames) {
+  if (firstFrame < 0) throw Error("the first frame must be >= 0, got " + std::to_string(firstFrame));
+  int count = sourceFrames < 0 ? -1 : std::max(0, sourceFrames - firstFrame);
+  if (maxFrames >= 0 && (count < 0 || maxFrames < count)) count = maxFrames;
   return count;
 }
 
@@ -140,7 +141,7 @@ std::vector<RunResult> runOdometry(FrameSource& source, const std::vector<RunOpt
   std::vector<std::unique_ptr<OdometryPipeline>> pipelines;
   for (const RunOptions& options : variants) pipelines.push_back(std::make_unique<OdometryPipeline>(source, options));
   const RunOptions& first = variants.front();
-  const int frameCount = framesInRun(source.frameCount(), first);
+  const int frameCount = framesInRun(source.frameCount(), first.firstFrame, first.maxFrames);
   source.skip(first.firstFrame);
 
   const auto start = Clock::now();
@@ -169,7 +170,7 @@ std::vector<RunResult> runOdometry(const Rig& rig, const std::vector<FrameObserv
   const std::vector<LensDistortion> none(rig.cameras.size());
   for (const RunOptions& options : variants) {
     OdometryPipeline pipeline(rig, none, truth, options);
-    const int count = framesInRun(static_cast<int>(frames.size()), options);
+    const int count = framesInRun(static_cast<int>(frames.size()), options.firstFrame, options.maxFrames);
     const int first = std::min(options.firstFrame, static_cast<int>(frames.size()));
     const auto start = Clock::now();
     for (int i = 0; i < count; ++i) {

@@ -79,9 +79,10 @@ class OdometryPipeline {
   RunResult result_;
 };
 
-// How many frames a run over a source of `sourceFrames` frames (-1: not known)
-// processes, from options.firstFrame and options.maxFrames; -1 when not known.
-int framesInRun(int sourceFrames, const RunOptions& options);
+// How many frames a pass over a source of `sourceFrames` frames (-1: not
+// known) takes when it starts at `firstFrame` (>= 0) and stops after
+// `maxFrames` (< 0: at the end); -1 when not known.
+int framesInRun(int sourceFrames, int firstFrame, int maxFrames);
 
 // Runs one pipeline over a source, or several over the same frames (each
 // frame read or rendered once); the source's time is added to every totals.
