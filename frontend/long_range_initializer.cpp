@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -58,21 +59,35 @@ InitializationResult LongRangeInitializer::initialize(const Rig& rig,
   rig.validate();
   if (rig.secondaryCount() < 1) throw Error("long-range initialiser: the rig needs a secondary camera");
   const LongRangeInitializerOptions& o = options_;
-  InitializationResult result;
-
   MonocularOptions monocularOptions = o.monocular;
   monocularOptions.frames = o.frames;
   monocularOptions.initialBaseline = o.initialBaseline;
   monocularOptions.solver = o.solver;
   monocularOptions.bundle = o.bundle;
   monocularOptions.seed = o.seed;
-  const MonocularResult monocular = buildMonocularMap(rig, frames, monocularOptions);
-  if (!monocular.success) {
-    result.failure = "long-range: " + monocular.failure;
-    return result;
-  }
+  const std::vector<MonocularResult> maps = buildMonocularMaps(rig, frames, monocularOptions);
 
-  BundleGraph bundle(rig, monocular.map, 1, o.bundle);
+  // The secondary camera judges the pair's motion hypotheses: its calibrated
+  // offset along the baseline fits the true motion only, so the planar twin
+  // leaves a large reprojection error even with S at its bounds.
+  std::optional<InitializationResult> best;
+  for (const MonocularResult& monocular : maps) {
+    if (!monocular.success) continue;
+    InitializationResult candidate = addSecondaryCameras(rig, frames, monocular.map);
+    if (!best || candidate.rmsReprojectionError_px < best->rmsReprojectionError_px) best = std::move(candidate);
+  }
+  if (best) return std::move(*best);
+  InitializationResult result;
+  result.failure = "long-range: " + maps.front().failure;
+  return result;
+}
+
+InitializationResult LongRangeInitializer::addSecondaryCameras(const Rig& rig,
+                                                               const std::vector<FrameObservations>& frames,
+                                                               const SparseMap& monocularMap) const {
+  const LongRangeInitializerOptions& o = options_;
+  InitializationResult result;
+  BundleGraph bundle(rig, monocularMap, 1, o.bundle);
   for (int k = 1; k <= rig.secondaryCount(); ++k) bundle.addExtrinsic(k, rig.extrinsics[k - 1], false);
   if (o.estimateScale) {
     bundle.addScale(o.initialKappa);

@@ -42,7 +42,9 @@ struct LongRangeInitializerOptions {
 
 // The long-range initialisation (method.md, Fig. 14; paper Section 4.3):
 //  1. monocular VO over the base camera of the first N frames, the first
-//     pair at distance initialBaseline (buildMonocularMap);
+//     pair at distance initialBaseline (buildMonocularMaps: one map per
+//     motion hypothesis of the pair; steps 2-5 run on each, and the one with
+//     the lowest RMS reprojection error is the result);
 //  2. every secondary observation of a mapped point joins the graph
 //     (EdgeProjectSecondaryScaled through one VertexStereoExtrinsic per
 //     secondary camera, starting at calibration and bounded by the rig's
@@ -77,6 +79,10 @@ class LongRangeInitializer {
   InitializationResult initialize(const Rig& rig, const std::vector<FrameObservations>& frames) const;
 
  private:
+  // Steps 2-5 on one monocular map.
+  InitializationResult addSecondaryCameras(const Rig& rig, const std::vector<FrameObservations>& frames,
+                                           const SparseMap& monocularMap) const;
+
   LongRangeInitializerOptions options_;
 };
 

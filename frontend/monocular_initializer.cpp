@@ -37,18 +37,19 @@ void triangulateNewTracks(SparseMap& map, const std::vector<PixelsByTrack>& pixe
   }
 }
 
-// The graph's pose i is frame order[i].
-SolverSummary bundleAdjust(SparseMap& map, const std::vector<int>& order, const Rig& rig,
-                           const std::vector<FrameObservations>& frames, const MonocularOptions& options) {
+// The graph's pose i is frame order[i]; returns the RMS reprojection error after.
+double bundleAdjust(SparseMap& map, const std::vector<int>& order, const Rig& rig,
+                    const std::vector<FrameObservations>& frames, const MonocularOptions& options,
+                    SolverSummary& summary) {
   BundleGraph bundle(rig, map, 1, options.bundle);
   bundle.holdDistance(0, 1);
   for (std::size_t i = 0; i < map.cameraFromWorld.size(); ++i)
     bundle.addObservations(static_cast<int>(i), frames[order[i]]);
   SolverOptions solver = SolverOptions::fromName(options.solver);
   solver.maxIterations = options.maxIterations;
-  const SolverSummary summary = Optimizer(solver).optimize(bundle.graph());
+  summary = Optimizer(solver).optimize(bundle.graph());
   map = bundle.map();
-  return summary;
+  return bundle.rmsReprojectionError_px();
 }
 
 // The second frame of the two-view pair: the last one that still shares
@@ -73,32 +74,16 @@ void validate(const MonocularOptions& options) {
 
 }  // namespace
 
-MonocularResult buildMonocularMap(const Rig& rig, const std::vector<FrameObservations>& frames,
-                                  const MonocularOptions& options) {
-  rig.validate();
-  validate(options);
+namespace {
+
+// The map from one motion hypothesis of the pair (frame 0 and frame order[1]):
+// its shared inliers triangulated, then every other frame posed and mapped in turn.
+MonocularResult mapFromPair(const Rig& rig, const std::vector<FrameObservations>& frames,
+                            const MonocularOptions& options, const std::vector<int>& order,
+                            const std::vector<PixelsByTrack>& pixels, const TwoViewResult& twoViewPose) {
   MonocularResult result;
-  if (static_cast<int>(frames.size()) < options.frames) {
-    result.failure =
-        "monocular: " + std::to_string(frames.size()) + " frames given, " + std::to_string(options.frames) + " needed";
-    return result;
-  }
   const Camera& camera = rig.cameras[0];
-  const std::vector<PixelsByTrack> framePixels = basePixels(frames, options.frames);
-
-  // Frames in the order they are posed: the pair, then the rest from the first.
-  const int pair = pairFrame(framePixels, options.pairOverlap);
-  std::vector<int> order = {0, pair};
-  for (int k = 1; k < options.frames; ++k)
-    if (k != pair) order.push_back(k);
-  std::vector<PixelsByTrack> pixels;
-  for (int k : order) pixels.push_back(framePixels[k]);
-  const std::string pairName = "frames 0-" + std::to_string(pair);
-
-  TwoViewOptions twoView = options.twoView;
-  twoView.camera = 0;
-  twoView.seed = options.seed;
-  const TwoViewResult twoViewPose = estimateTwoView(frames[0], frames[pair], camera.intrinsics, twoView);
+  const std::string pairName = "frames 0-" + std::to_string(order[1]);
   if (!twoViewPose.success) {
     result.failure = "monocular, " + pairName + ": " + twoViewPose.failure;
     return result;
@@ -112,7 +97,7 @@ MonocularResult buildMonocularMap(const Rig& rig, const std::vector<FrameObserva
                      ", need " + std::to_string(options.minPairPoints);
     return result;
   }
-  result.summary = bundleAdjust(map, order, rig, frames, options);
+  result.rmsReprojectionError_px = bundleAdjust(map, order, rig, frames, options, result.summary);
 
   for (std::size_t i = 2; i < order.size(); ++i) {
     const int k = order[i];
@@ -135,7 +120,7 @@ MonocularResult buildMonocularMap(const Rig& rig, const std::vector<FrameObserva
     }
     map.cameraFromWorld.push_back(pose.cameraFromWorld);
     triangulateNewTracks(map, pixels, camera.intrinsics, options.minViews, options.triangulation, nullptr);
-    result.summary = bundleAdjust(map, order, rig, frames, options);
+    result.rmsReprojectionError_px = bundleAdjust(map, order, rig, frames, options, result.summary);
   }
 
   // Back to frame order, in the unit that puts frames 0 and 1 initialBaseline apart.
@@ -147,6 +132,46 @@ MonocularResult buildMonocularMap(const Rig& rig, const std::vector<FrameObserva
                    (poses[1].inverse().translation() - poses[0].inverse().translation()).norm());
   result.success = true;
   return result;
+}
+
+}  // namespace
+
+std::vector<MonocularResult> buildMonocularMaps(const Rig& rig, const std::vector<FrameObservations>& frames,
+                                                const MonocularOptions& options) {
+  rig.validate();
+  validate(options);
+  if (static_cast<int>(frames.size()) < options.frames) {
+    MonocularResult tooFew;
+    tooFew.failure =
+        "monocular: " + std::to_string(frames.size()) + " frames given, " + std::to_string(options.frames) + " needed";
+    return {tooFew};
+  }
+  const std::vector<PixelsByTrack> framePixels = basePixels(frames, options.frames);
+
+  // Frames in the order they are posed: the pair, then the rest from the first.
+  const int pair = pairFrame(framePixels, options.pairOverlap);
+  std::vector<int> order = {0, pair};
+  for (int k = 1; k < options.frames; ++k)
+    if (k != pair) order.push_back(k);
+  std::vector<PixelsByTrack> pixels;
+  for (int k : order) pixels.push_back(framePixels[k]);
+
+  TwoViewOptions twoView = options.twoView;
+  twoView.camera = 0;
+  twoView.seed = options.seed;
+  std::vector<MonocularResult> maps;
+  for (const TwoViewResult& motion : twoViewHypotheses(frames[0], frames[pair], rig.cameras[0].intrinsics, twoView))
+    maps.push_back(mapFromPair(rig, frames, options, order, pixels, motion));
+  return maps;
+}
+
+MonocularResult buildMonocularMap(const Rig& rig, const std::vector<FrameObservations>& frames,
+                                  const MonocularOptions& options) {
+  std::vector<MonocularResult> maps = buildMonocularMaps(rig, frames, options);
+  auto best = maps.begin();
+  for (auto map = maps.begin(); map != maps.end(); ++map)
+    if (map->success && (!best->success || map->rmsReprojectionError_px < best->rmsReprojectionError_px)) best = map;
+  return std::move(*best);
 }
 
 }  // namespace lrsvo

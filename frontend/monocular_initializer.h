@@ -43,6 +43,7 @@ struct MonocularResult {
   std::string failure;  // why not, when !success
   SparseMap map;  // every frame on success (empty otherwise); world = the first camera, |C_1 - C_0| = initialBaseline
   SolverSummary summary;  // the last bundle adjustment
+  double rmsReprojectionError_px = 0.0;  // per image coordinate, after the last bundle adjustment
 };
 
 // Monocular visual odometry over the base camera of the first N frames, at an
@@ -58,6 +59,15 @@ struct MonocularResult {
 // direction of travel the other frames then still refine. Only the base
 // camera (camera 0) is used. Reports failure in the result; throws
 // lrsvo::Error on an invalid rig or options.
+//
+// Near-planar ground lets the pair fit two motions (twoViewHypotheses): one
+// map is built from each, in the hypotheses' order. Only relief tells them
+// apart in the base camera, so a caller with a second camera should judge
+// them with it (LongRangeInitializer does).
+std::vector<MonocularResult> buildMonocularMaps(const Rig& rig, const std::vector<FrameObservations>& frames,
+                                                const MonocularOptions& options = {});
+// Of buildMonocularMaps, the successful map with the lowest RMS reprojection
+// error; the first hypothesis's failure when none succeeds.
 MonocularResult buildMonocularMap(const Rig& rig, const std::vector<FrameObservations>& frames,
                                   const MonocularOptions& options = {});
 

@@ -1,6 +1,7 @@
 #include "frontend/two_view.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -64,6 +65,42 @@ void refine(TwoViewResult& result, const std::map<int, Eigen::Vector2d>& pixelsA
   result.translation = b->translation().normalized();
 }
 
+// The tracks two frames share, with their normalised image coordinates.
+struct Correspondences {
+  std::vector<int> tracks;
+  std::vector<cv::Point2d> pointsA, pointsB;
+};
+
+Correspondences correspondences(const std::map<int, Eigen::Vector2d>& pixelsA,
+                                const std::map<int, Eigen::Vector2d>& pixelsB, const PinholeIntrinsics& intrinsics) {
+  Correspondences shared;
+  for (const auto& [track, pixel] : pixelsA) {
+    auto it = pixelsB.find(track);
+    if (it == pixelsB.end()) continue;
+    shared.tracks.push_back(track);
+    shared.pointsA.push_back(normalised(pixel, intrinsics));
+    shared.pointsB.push_back(normalised(it->second, intrinsics));
+  }
+  return shared;
+}
+
+double directionAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+bool isNewMotion(const std::vector<TwoViewResult>& known, const Eigen::Matrix3d& rotation,
+                 const Eigen::Vector3d& translation) {
+  // The planar twin moves along the ground's normal instead of along the
+  // ground: tens of degrees apart, against well under a degree for two
+  // estimates of one motion.
+  constexpr double kSameMotion_rad = 0.1;
+  for (const TwoViewResult& motion : known)
+    if (directionAngle(motion.translation, translation) < kSameMotion_rad &&
+        Eigen::AngleAxisd(motion.rotation.transpose() * rotation).angle() < kSameMotion_rad)
+      return false;
+  return true;
+}
+
 TwoViewResult failed(TwoViewResult result, const std::string& why) {
   result.success = false;
   result.failure = "two-view: " + why;
@@ -84,15 +121,7 @@ TwoViewResult estimateTwoView(const FrameObservations& a, const FrameObservation
   TwoViewResult result;
   const std::map<int, Eigen::Vector2d> pixelsA = pixelsByTrack(a, options.camera);
   const std::map<int, Eigen::Vector2d> pixelsB = pixelsByTrack(b, options.camera);
-  std::vector<int> tracks;
-  std::vector<cv::Point2d> pointsA, pointsB;
-  for (const auto& [track, pixel] : pixelsA) {
-    auto it = pixelsB.find(track);
-    if (it == pixelsB.end()) continue;
-    tracks.push_back(track);
-    pointsA.push_back(normalised(pixel, intrinsics));
-    pointsB.push_back(normalised(it->second, intrinsics));
-  }
+  const auto [tracks, pointsA, pointsB] = correspondences(pixelsA, pixelsB, intrinsics);
   result.correspondences = static_cast<int>(tracks.size());
   if (result.correspondences < std::max(5, options.minInliers))
     return failed(result, std::to_string(result.correspondences) + " shared tracks, need at least " +
@@ -103,8 +132,8 @@ TwoViewResult estimateTwoView(const FrameObservations& a, const FrameObservation
   // the correspondences: each attempt shuffles them. Near-planar ground seen
   // from far away lets RANSAC settle on the twin of the true essential
   // matrix (motion along the ground's normal) with nearly as many inliers
-  // under the Sampson distance; only the cheirality test tells them apart, so
-  // the attempt with the most inliers in front of both cameras wins.
+  // under the Sampson distance; the attempt with the most inliers in front of
+  // both cameras wins, which may still be the twin (see twoViewHypotheses).
   const cv::Matx33d identity = cv::Matx33d::eye();
   std::mt19937_64 rng(options.seed);
   std::vector<int> order(tracks.size());
@@ -149,6 +178,53 @@ TwoViewResult estimateTwoView(const FrameObservations& a, const FrameObservation
   if (options.refine) refine(result, pixelsA, pixelsB, intrinsics, options.refineSolver);
   result.success = true;
   return result;
+}
+
+std::vector<TwoViewResult> twoViewHypotheses(const FrameObservations& a, const FrameObservations& b,
+                                             const PinholeIntrinsics& intrinsics, const TwoViewOptions& options) {
+  std::vector<TwoViewResult> hypotheses = {estimateTwoView(a, b, intrinsics, options)};
+  if (!hypotheses.front().success) return hypotheses;
+  const std::map<int, Eigen::Vector2d> pixelsA = pixelsByTrack(a, options.camera);
+  const std::map<int, Eigen::Vector2d> pixelsB = pixelsByTrack(b, options.camera);
+  const Correspondences shared = correspondences(pixelsA, pixelsB, intrinsics);
+
+  // The ground's homography, then each of its motions whose essential matrix [t]x R, decomposed by the
+  // cheirality test like the first hypothesis's, keeps nearly all of the homography's inliers in front of both
+  // cameras: a motion that puts a fifth of the ground behind a camera is not the ground's.
+  constexpr double kMinInFrontFraction = 0.8;
+  cv::Mat planeMask;
+  const cv::Mat homography =
+      cv::findHomography(shared.pointsA, shared.pointsB, cv::RANSAC, options.ransacThreshold_px / intrinsics.fx,
+                         planeMask, 2000, options.confidence);
+  if (homography.empty()) return hypotheses;
+  const int planeInliers = cv::countNonZero(planeMask);
+  if (planeInliers < options.minInliers) return hypotheses;
+  std::vector<cv::Mat> rotations, translations, normals;
+  cv::decomposeHomographyMat(homography, cv::Matx33d::eye(), rotations, translations, normals);
+  for (std::size_t solution = 0; solution < rotations.size(); ++solution) {
+    const cv::Mat& t = translations[solution];
+    const cv::Mat skew = (cv::Mat_<double>(3, 3) << 0, -t.at<double>(2), t.at<double>(1), t.at<double>(2), 0,
+                          -t.at<double>(0), -t.at<double>(1), t.at<double>(0), 0);
+    cv::Mat rotation, translation, inFrontMask = planeMask.clone();
+    const int inFront = cv::recoverPose(skew * rotations[solution], shared.pointsA, shared.pointsB, cv::Matx33d::eye(),
+                                        rotation, translation, inFrontMask);
+    if (inFront < kMinInFrontFraction * planeInliers) continue;
+    TwoViewResult motion;
+    for (int r = 0; r < 3; ++r) {
+      motion.translation[r] = translation.at<double>(r);
+      for (int c = 0; c < 3; ++c) motion.rotation(r, c) = rotation.at<double>(r, c);
+    }
+    motion.translation.normalize();
+    if (!isNewMotion(hypotheses, motion.rotation, motion.translation)) continue;
+    motion.correspondences = hypotheses.front().correspondences;
+    for (std::size_t i = 0; i < shared.tracks.size(); ++i)
+      if (inFrontMask.at<unsigned char>(static_cast<int>(i))) motion.inlierTracks.push_back(shared.tracks[i]);
+    if (options.refine) refine(motion, pixelsA, pixelsB, intrinsics, options.refineSolver);
+    if (!isNewMotion(hypotheses, motion.rotation, motion.translation)) continue;
+    motion.success = true;
+    hypotheses.push_back(std::move(motion));
+  }
+  return hypotheses;
 }
 
 }  // namespace lrsvo

@@ -47,4 +47,18 @@ struct TwoViewResult {
 TwoViewResult estimateTwoView(const FrameObservations& a, const FrameObservations& b,
                               const PinholeIntrinsics& intrinsics, const TwoViewOptions& options = {});
 
+// The motions two frames of near-planar ground may have come from. Seen from
+// far away, ground that is nearly a plane fits two motions almost equally
+// well under the epipolar constraint: the true one, and its planar twin,
+// which moves along the ground's normal, turning as it goes. Five-point
+// RANSAC with the cheirality test may settle on the twin; the ground's
+// homography still decomposes into the true motion. So a caller with more
+// evidence (more frames, a second camera) should try each hypothesis. The
+// first is estimateTwoView's (and its failure, if it fails); then every other
+// motion of the correspondences' homography (cv::decomposeHomographyMat)
+// that keeps at least 80 % of the homography's inliers in front of both
+// cameras, refined like the first over those inliers.
+std::vector<TwoViewResult> twoViewHypotheses(const FrameObservations& a, const FrameObservations& b,
+                                             const PinholeIntrinsics& intrinsics, const TwoViewOptions& options = {});
+
 }  // namespace lrsvo

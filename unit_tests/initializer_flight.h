@@ -16,7 +16,8 @@ namespace lrsvo::test {
 // px, the paper's "0.2 deg -> ~3 px" regime), plus the simulator's default
 // per-frame vibration (0.2 mrad); no slow drift, since one shared S is what
 // the initialiser estimates over its 3 s.
-inline SimulatedSequence initializationFlight(double altitude_m, std::uint64_t seed, double deformation = 1.0) {
+inline FeatureSimulationOptions initializationFlightOptions(double altitude_m, std::uint64_t seed,
+                                                            double deformation = 1.0) {
   FeatureSimulationOptions options;
   options.flight.altitude_m = altitude_m;
   options.flight.speed_m_s = 20.0;
@@ -31,7 +32,12 @@ inline SimulatedSequence initializationFlight(double altitude_m, std::uint64_t s
   options.deformation.offset *= deformation;
   options.deformation.seed = seed;
   options.seed = seed;
-  return simulateSequence(options);
+  return options;
+}
+
+// That flight, simulated.
+inline SimulatedSequence initializationFlight(double altitude_m, std::uint64_t seed, double deformation = 1.0) {
+  return simulateSequence(initializationFlightOptions(altitude_m, seed, deformation));
 }
 
 // Distance between the final camera's estimated and true centres, with the

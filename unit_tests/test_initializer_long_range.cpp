@@ -1,4 +1,5 @@
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -100,6 +101,36 @@ TEST(InitializerLongRange, SameSeedSameResult) {
     EXPECT_TRUE(first.cameraFromWorld[i].isApprox(second.cameraFromWorld[i], 0.0)) << "frame " << i;
   EXPECT_EQ(first.kappa, second.kappa);
   EXPECT_EQ(first.extrinsics[0], second.extrinsics[0]);
+}
+
+// Over flat ground (no relief, trees or buildings) the pair's essential
+// matrix may settle on the planar twin, which flies along the ground's normal;
+// on this seed it does (found by trying seeds: 9, 10 and 11 of 1-12 do). Its
+// map ends 59 m from the truth after 60 m flown. The homography's true motion
+// is the other hypothesis, and the secondary camera, which fits the true
+// motion only, picks it.
+TEST(InitializerLongRange, SecondaryCameraRejectsThePlanarTwin) {
+  FeatureSimulationOptions options = initializationFlightOptions(60.0, 10);
+  options.terrain.relief_m = 0.0;
+  options.terrain.treeDensity_per_km2 = 0.0;
+  options.terrain.buildingDensity_per_km2 = 0.0;
+  const SimulatedSequence sequence = simulateSequence(options);
+  const double flown = distanceFlown(sequence, 10);
+
+  const std::vector<MonocularResult> maps = buildMonocularMaps(sequence.rig, sequence.frames);
+  ASSERT_EQ(maps.size(), 2u);
+  const std::vector<Eigen::Isometry3d> truth = alignToFirstCamera(sequence.trueCameraFromWorld);
+  const double toMetres = distanceFlown(sequence, 2);  // the maps' unit: frames 0 and 1 are 1 apart
+  const auto endError = [&](const MonocularResult& map) {
+    return (toMetres * map.map.cameraFromWorld[9].inverse().translation() - truth[9].inverse().translation()).norm();
+  };
+  ASSERT_TRUE(maps[0].success && maps[1].success);
+  EXPECT_GT(endError(maps[0]), 0.5 * flown);  // the essential matrix's twin
+  EXPECT_LT(endError(maps[1]), 0.05 * flown);
+
+  const InitializationResult result = LongRangeInitializer({}).initialize(sequence.rig, sequence.frames);
+  ASSERT_TRUE(result.success) << result.failure;
+  EXPECT_LT(finalPositionError(result, sequence), 0.05 * flown);
 }
 
 TEST(InitializerLongRange, ReportsWhyItFails) {

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -84,6 +85,44 @@ TEST(InitializerTwoView, SameSeedSameResult) {
   EXPECT_EQ(first.rotation, second.rotation);
   EXPECT_EQ(first.translation, second.translation);
   EXPECT_EQ(first.inlierTracks, second.inlierTracks);
+}
+
+// 200 points of flat ground 60 m below camera a, which looks straight down;
+// camera b 6.7 m along a's x axis (the paper's frames 10 apart at 20 m/s),
+// turned by a few milliradians. Pixel noise of 0.5 px per axis.
+TwoViewScene makeGroundScene(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> lateral(-0.3, 0.3);
+  std::normal_distribution<double> noise(0.0, 0.5);
+  TwoViewScene scene;
+  scene.bFromA.linear() = expSO3(Eigen::Vector3d(0.004, -0.003, 0.002));
+  scene.bFromA.translation() = -scene.bFromA.linear() * Eigen::Vector3d(6.7, 0.0, 0.0);
+  for (int track = 0; track < 200; ++track) {
+    const Eigen::Vector3d point(60.0 * lateral(rng), 60.0 * lateral(rng), 60.0);
+    const Eigen::Vector2d pixelA = kIntrinsics.project(point);
+    const Eigen::Vector2d pixelB = kIntrinsics.project(scene.bFromA * point);
+    scene.a.observations.push_back({track, 0, pixelA + Eigen::Vector2d(noise(rng), noise(rng))});
+    scene.b.observations.push_back({track, 0, pixelB + Eigen::Vector2d(noise(rng), noise(rng))});
+  }
+  return scene;
+}
+
+// Whichever motion the essential matrix picks on flat ground, the true one
+// is among the hypotheses (the essential matrix's own, or the homography's).
+// Measured over seeds 1-5: the twin keeps 25-43 % of the ground in front of
+// both cameras, so it is never a hypothesis here.
+TEST(InitializerTwoView, FlatGroundHypothesesHoldTheTrueMotion) {
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const TwoViewScene scene = makeGroundScene(seed);
+    const std::vector<TwoViewResult> hypotheses = twoViewHypotheses(scene.a, scene.b, kIntrinsics);
+    bool hasTrue = false;
+    for (const TwoViewResult& motion : hypotheses) {
+      ASSERT_TRUE(motion.success) << motion.failure;
+      hasTrue |= rotationError(motion.rotation, scene.bFromA.linear()) < 0.01 &&
+                 directionError(motion.translation, scene.bFromA.translation()) < 0.1;
+    }
+    EXPECT_TRUE(hasTrue) << "seed " << seed << ", " << hypotheses.size() << " hypotheses";
+  }
 }
 
 TEST(InitializerTwoView, ReportsTooFewCorrespondences) {
