@@ -72,10 +72,6 @@ void validate(const MonocularOptions& options) {
     throw Error("monocular initialiser: pairOverlap must lie in (0, 1]");
 }
 
-}  // namespace
-
-namespace {
-
 // The map from one motion hypothesis of the pair (frame 0 and frame order[1]):
 // its shared inliers triangulated, then every other frame posed and mapped in turn.
 MonocularResult mapFromPair(const Rig& rig, const std::vector<FrameObservations>& frames,
