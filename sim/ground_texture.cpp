@@ -6,6 +6,7 @@
 #include <string>
 
 #include "graph/error.h"
+#include "sim/inline_math.h"
 #include "sim/seed_mix.h"
 
 namespace lrsvo {
@@ -26,21 +27,24 @@ std::uint64_t mix(std::uint64_t h) {
   return h ^ (h >> 32);
 }
 
-// A hash of a lattice point and a salt, uniform in [0, 1).
-double hash01(std::int64_t x, std::int64_t y, std::uint32_t salt) {
-  const std::uint64_t h = mix(static_cast<std::uint64_t>(x) * 0x9e3779b97f4a7c15ULL ^
-                              mix(static_cast<std::uint64_t>(y) + (static_cast<std::uint64_t>(salt) << 40)));
-  return static_cast<double>(h >> 11) * 0x1.0p-53;
+// A hash of a lattice point and a salt, uniform in [0, 1), in two steps:
+// the row's part (y and the salt), then the point's.
+std::uint64_t rowHash(std::int64_t y, std::uint32_t salt) {
+  return mix(static_cast<std::uint64_t>(y) + (static_cast<std::uint64_t>(salt) << 40));
 }
+double pointHash01(std::int64_t x, std::uint64_t row) {
+  return static_cast<double>(mix(static_cast<std::uint64_t>(x) * 0x9e3779b97f4a7c15ULL ^ row) >> 11) * 0x1.0p-53;
+}
+double hash01(std::int64_t x, std::int64_t y, std::uint32_t salt) { return pointHash01(x, rowHash(y, salt)); }
 
 // Smooth value noise of unit wavelength in [-0.5, 0.5).
 double valueNoise(double x, double y, std::uint32_t salt) {
-  const double fx = std::floor(x), fy = std::floor(y);
-  const auto ix = static_cast<std::int64_t>(fx), iy = static_cast<std::int64_t>(fy);
-  const double tx = x - fx, ty = y - fy;
+  const std::int64_t ix = floorIndex(x), iy = floorIndex(y);
+  const double tx = x - static_cast<double>(ix), ty = y - static_cast<double>(iy);
   const double sx = tx * tx * (3.0 - 2.0 * tx), sy = ty * ty * (3.0 - 2.0 * ty);
-  const double a = hash01(ix, iy, salt), b = hash01(ix + 1, iy, salt);
-  const double c = hash01(ix, iy + 1, salt), d = hash01(ix + 1, iy + 1, salt);
+  const std::uint64_t row0 = rowHash(iy, salt), row1 = rowHash(iy + 1, salt);
+  const double a = pointHash01(ix, row0), b = pointHash01(ix + 1, row0);
+  const double c = pointHash01(ix, row1), d = pointHash01(ix + 1, row1);
   return a + (b - a) * sx + (c - a) * sy + (a - b - c + d) * sx * sy - 0.5;
 }
 
@@ -57,10 +61,15 @@ double fractal(double x, double y, double lambdaMin, double lambdaMax, double ro
                std::uint32_t salt) {
   double sum = 0.0, amplitude = 1.0, total = 0.0;
   std::uint32_t octave = 0;
-  for (double lambda = lambdaMax; lambda >= lambdaMin; lambda *= 0.5, amplitude *= roughness, ++octave) {
+  // Wavelengths halve exactly, so their inverses double exactly: no division per octave.
+  const double halfInverseFootprint = 0.5 / footprint;
+  double inverseLambda = 1.0 / lambdaMax;
+  for (double lambda = lambdaMax; lambda >= lambdaMin;
+       lambda *= 0.5, inverseLambda *= 2.0, amplitude *= roughness, ++octave) {
     total += amplitude * amplitude;
-    const double weight = keep(lambda, footprint);
-    if (weight > 0.0) sum += weight * amplitude * valueNoise(x / lambda, y / lambda, salt * 131u + octave);
+    const double weight = std::clamp(lambda * halfInverseFootprint - 1.0, 0.0, 1.0);  // keep(lambda, footprint)
+    if (weight > 0.0)
+      sum += weight * amplitude * valueNoise(x * inverseLambda, y * inverseLambda, salt * 131u + octave);
   }
   return sum / std::sqrt(total);
 }
@@ -103,17 +112,16 @@ float GroundTexture::grey(const SurfaceHit& hit, double footprint_m) const {
   return groundTexels_.sample(hit.point.x(), hit.point.y(), footprint_m);
 }
 
-void GroundTexture::prepare(const std::vector<SurfaceHit>& hits, const std::vector<float>& footprints_m,
-                            int threads) const {
-  groundTexels_.require(
-      hits.size(),
-      [&](std::size_t i, Eigen::Vector2d& xy, float& footprint_m) {
-        if (hits[i].tree || hits[i].building) return false;
-        xy = hits[i].point.head<2>();
-        footprint_m = footprints_m[i];
-        return true;
-      },
-      threads);
+void GroundTexture::greyRow(const SurfaceHit* hits, const float* footprints_m, int count, float* out) const {
+  for (int i = 0; i < count; ++i) {
+    const SurfaceHit& hit = hits[i];
+    out[i] = hit.tree || hit.building ? grey(hit, footprints_m[i])
+                                      : groundTexels_.sample(hit.point.x(), hit.point.y(), footprints_m[i]);
+  }
+}
+
+void GroundTexture::prepare(const std::vector<TexelRegion>& ground, int threads) const {
+  groundTexels_.require(ground, threads);
 }
 
 double GroundTexture::grain(double x, double y, double footprint_m) const {

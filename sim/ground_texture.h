@@ -32,11 +32,12 @@ class GroundTexture : public SurfaceTexture {
   GroundTexture(const GroundTexture&) = delete;  // its texel cache calls back into it
   GroundTexture& operator=(const GroundTexture&) = delete;
 
-  // Caches the ground's texels around the image's ground hits (sim/texel_tiles.h).
-  void prepare(const std::vector<SurfaceHit>& hits, const std::vector<float>& footprints_m, int threads) const override;
-  // Ground hits from the cache filled by prepare() (throws lrsvo::Error for
-  // a ground hit prepare() did not see); crowns and roofs directly.
+  // Caches the ground's texels over the regions an image sees (sim/texel_tiles.h).
+  void prepare(const std::vector<TexelRegion>& ground, int threads) const override;
+  // Ground hits from the cache filled by prepare() (or directly, to the same
+  // value, outside it); crowns and roofs directly.
   float grey(const SurfaceHit& hit, double footprint_m) const override;
+  void greyRow(const SurfaceHit* hits, const float* footprints_m, int count, float* out) const override;
   // The ground alone (fields, tracks, hedges) at (x, y), evaluated directly.
   float ground(double x, double y, double footprint_m) const;
 

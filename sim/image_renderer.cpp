@@ -1,5 +1,6 @@
 #include "sim/image_renderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -49,26 +50,16 @@ double ImageRenderer::gain(double time_s, int cameraIndex) const {
 }
 
 cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d& cameraFromWorld) const {
-  const SurfaceView view(terrain_, camera, cameraFromWorld);
-  const int width = camera.width;
-  std::vector<SurfaceHit>& hits = hits_;
-  std::vector<float>& footprints = footprints_;
-  hits.resize(static_cast<std::size_t>(width) * camera.height);
-  footprints.resize(hits.size());
-  parallelFor(0, camera.height, options_.threads, kRowsPerChunk, [&](int v) {
-    for (int u = 0; u < width; ++u) {
-      const std::size_t i = static_cast<std::size_t>(v) * width + u;
-      hits[i] = view.hit(u, v);
-      footprints[i] = static_cast<float>(view.footprint(hits[i]));
-    }
-  });
-  texture_.prepare(hits, footprints, options_.threads);
-  cv::Mat scene(camera.height, width, CV_32FC1);
-  parallelFor(0, camera.height, options_.threads, kRowsPerChunk, [&](int v) {
-    float* row = scene.ptr<float>(v);
-    for (int u = 0; u < width; ++u) {
-      const std::size_t i = static_cast<std::size_t>(v) * width + u;
-      row[u] = texture_.grey(hits[i], footprints[i]);
+  const SurfaceView view(terrain_, camera, cameraFromWorld, options_.threads);
+  texture_.prepare(view.groundRegions(), options_.threads);
+  cv::Mat scene(camera.height, camera.width, CV_32FC1);
+  const int chunks = (camera.height + kRowsPerChunk - 1) / kRowsPerChunk;
+  parallelFor(0, chunks, options_.threads, 1, [&](int chunk) {
+    std::vector<SurfaceHit> hits(camera.width);
+    std::vector<float> footprints(camera.width);
+    for (int v = chunk * kRowsPerChunk; v < std::min(camera.height, (chunk + 1) * kRowsPerChunk); ++v) {
+      view.hitRow(v, 0, camera.width, hits.data(), footprints.data());
+      texture_.greyRow(hits.data(), footprints.data(), camera.width, scene.ptr<float>(v));
     }
   });
   return scene;
@@ -78,32 +69,41 @@ cv::Mat ImageRenderer::render(const Camera& camera, const Eigen::Isometry3d& cam
                               int cameraIndex) const {
   cv::Mat image = renderScene(camera, cameraFromWorld);
   image *= gain(time_s, cameraIndex);
-  if (options_.vignetting > 0.0) {
-    // Relative illumination cos^4 of the off-axis angle, scaled to the requested corner loss.
-    const PinholeIntrinsics& k = camera.intrinsics;
-    const double cornerSquared = std::pow(std::max(k.cx, camera.width - k.cx) / k.fx, 2) +
-                                 std::pow(std::max(k.cy, camera.height - k.cy) / k.fy, 2);
-    const double cornerCos4 = 1.0 / std::pow(1.0 + cornerSquared, 2);
-    for (int v = 0; v < image.rows; ++v) {
-      float* row = image.ptr<float>(v);
-      for (int u = 0; u < image.cols; ++u) {
-        const double r2 = std::pow((u - k.cx) / k.fx, 2) + std::pow((v - k.cy) / k.fy, 2);
-        const double cos4 = 1.0 / std::pow(1.0 + r2, 2);
-        row[u] *= static_cast<float>(1.0 - options_.vignetting * (1.0 - cos4) / (1.0 - cornerCos4));
-      }
+  if (options_.vignetting > 0.0) vignette(camera, image);
+  if (options_.blurSigma_px > 0.0) cv::GaussianBlur(image, image, cv::Size(0, 0), options_.blurSigma_px);
+  // Noise and the conversion to 8 bits, a band of rows at a time: each band
+  // draws its noise from its own seed, so the image does not depend on the threads.
+  cv::Mat out(image.size(), CV_8UC1);
+  const int chunks = (image.rows + kRowsPerChunk - 1) / kRowsPerChunk;
+  parallelFor(0, chunks, options_.threads, 1, [&](int chunk) {
+    const cv::Range rows(chunk * kRowsPerChunk, std::min(image.rows, (chunk + 1) * kRowsPerChunk));
+    cv::Mat band = image.rowRange(rows);
+    if (options_.noiseSigma_grey > 0.0) {
+      cv::Mat noise(band.size(), CV_32FC1);
+      cv::RNG rng(mixSeed(seed_ ^ kNoiseStream, static_cast<std::uint64_t>(frame),
+                          static_cast<std::uint64_t>(cameraIndex) << 32 | static_cast<std::uint64_t>(chunk)));
+      rng.fill(noise, cv::RNG::NORMAL, 0.0, options_.noiseSigma_grey);
+      band += noise;
+    }
+    band.convertTo(out.rowRange(rows), CV_8UC1);  // rounds and saturates to 0..255
+  });
+  return out;
+}
+
+void ImageRenderer::vignette(const Camera& camera, cv::Mat& image) const {
+  // Relative illumination cos^4 of the off-axis angle, scaled to the requested corner loss.
+  const PinholeIntrinsics& k = camera.intrinsics;
+  const double cornerSquared = std::pow(std::max(k.cx, camera.width - k.cx) / k.fx, 2) +
+                               std::pow(std::max(k.cy, camera.height - k.cy) / k.fy, 2);
+  const double cornerCos4 = 1.0 / std::pow(1.0 + cornerSquared, 2);
+  for (int v = 0; v < image.rows; ++v) {
+    float* row = image.ptr<float>(v);
+    for (int u = 0; u < image.cols; ++u) {
+      const double r2 = std::pow((u - k.cx) / k.fx, 2) + std::pow((v - k.cy) / k.fy, 2);
+      const double cos4 = 1.0 / std::pow(1.0 + r2, 2);
+      row[u] *= static_cast<float>(1.0 - options_.vignetting * (1.0 - cos4) / (1.0 - cornerCos4));
     }
   }
-  if (options_.blurSigma_px > 0.0) cv::GaussianBlur(image, image, cv::Size(0, 0), options_.blurSigma_px);
-  if (options_.noiseSigma_grey > 0.0) {
-    cv::Mat noise(image.size(), CV_32FC1);
-    cv::RNG rng(
-        mixSeed(seed_ ^ kNoiseStream, static_cast<std::uint64_t>(frame), static_cast<std::uint64_t>(cameraIndex)));
-    rng.fill(noise, cv::RNG::NORMAL, 0.0, options_.noiseSigma_grey);
-    image += noise;
-  }
-  cv::Mat out;
-  image.convertTo(out, CV_8UC1);  // rounds and saturates to 0..255
-  return out;
 }
 
 }  // namespace lrsvo

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
 
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
@@ -27,8 +26,8 @@ struct RenderOptions {
 // grey there, averaged over the pixel's footprint on the surface so that
 // images do not shimmer as the camera moves. Then the gain of that camera at
 // that time, vignetting, blur and noise (seeded by seed, frame and camera:
-// the same call gives the same image). One image at a time: render() reuses
-// the per-pixel buffers of the last call and the texture's caches.
+// the same call gives the same image). One image at a time: render() fills
+// the texture's caches for the image first, then shades its rows in parallel.
 class ImageRenderer {
  public:
   // Throws lrsvo::Error on negative sigmas, drift or vignetting, a
@@ -46,14 +45,12 @@ class ImageRenderer {
   double gain(double time_s, int cameraIndex) const;
 
  private:
+  void vignette(const Camera& camera, cv::Mat& image) const;
+
   const Terrain& terrain_;
   const SurfaceTexture& texture_;
   RenderOptions options_;
   std::uint64_t seed_;
-  // Per-pixel scratch kept between images: a fresh 50 MB per image cost more
-  // in page faults than shading it.
-  mutable std::vector<SurfaceHit> hits_;
-  mutable std::vector<float> footprints_;
 };
 
 }  // namespace lrsvo

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include "sim/terrain.h"
+#include "sim/texel_tiles.h"
 
 namespace lrsvo {
 
@@ -21,14 +22,18 @@ struct SurfaceHit {
 class SurfaceTexture {
  public:
   virtual ~SurfaceTexture() = default;
-  // Called once before the grey() calls of one image, with all its hits and
-  // footprints: a texture may fill its caches here (on up to `threads`
-  // threads). grey() may then run on many threads at once; prepare() must
-  // not run while another image of the same texture is being shaded.
-  virtual void prepare(const std::vector<SurfaceHit>& hits, const std::vector<float>& footprints_m, int threads) const {
-    (void)hits, (void)footprints_m, (void)threads;
-  }
+  // Called once before the grey() calls of one image, with the ground it
+  // sees (SurfaceView::groundRegions()): a texture may fill its caches here
+  // (on up to `threads` threads). grey() may then run on many threads at
+  // once; prepare() must not run while another image of the same texture is
+  // being shaded.
+  virtual void prepare(const std::vector<TexelRegion>& ground, int threads) const { (void)ground, (void)threads; }
   virtual float grey(const SurfaceHit& hit, double footprint_m) const = 0;
+  // grey() of `count` hits into `out`: the renderer shades a row at a time,
+  // which a texture may do faster than one virtual call per pixel.
+  virtual void greyRow(const SurfaceHit* hits, const float* footprints_m, int count, float* out) const {
+    for (int i = 0; i < count; ++i) out[i] = grey(hits[i], footprints_m[i]);
+  }
 };
 
 }  // namespace lrsvo

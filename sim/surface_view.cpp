@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <string>
 
 #include "graph/error.h"
+#include "graph/parallel_for.h"
 #include "sim/footprint.h"
 
 namespace lrsvo {
@@ -55,7 +57,8 @@ double buildingDepth(const Eigen::Vector3d& origin, const Eigen::Vector3d& direc
 
 }  // namespace
 
-SurfaceView::SurfaceView(const Terrain& terrain, const Camera& camera, const Eigen::Isometry3d& cameraFromWorld)
+SurfaceView::SurfaceView(const Terrain& terrain, const Camera& camera, const Eigen::Isometry3d& cameraFromWorld,
+                         int threads)
     : terrain_(terrain),
       camera_(camera),
       meanFocal_(std::sqrt(camera.intrinsics.fx * camera.intrinsics.fy)),
@@ -65,11 +68,60 @@ SurfaceView::SurfaceView(const Terrain& terrain, const Camera& camera, const Eig
   centre_ = worldFromCamera.translation();
   nodesU_ = (camera.width - 1 + kGroundGrid_px - 1) / kGroundGrid_px + 1;
   nodesV_ = (camera.height - 1 + kGroundGrid_px - 1) / kGroundGrid_px + 1;
-  groundDepth_.resize(static_cast<std::size_t>(nodesU_) * nodesV_);
-  for (int j = 0; j < nodesV_; ++j)
-    for (int i = 0; i < nodesU_; ++i)
-      groundDepth_[j * nodesU_ + i] = groundDepth(ray(i * kGroundGrid_px, j * kGroundGrid_px));
+  solveGroundGrid(threads);
   listObstacles(terrain.minHeight() - 1.0);
+}
+
+void SurfaceView::solveGroundGrid(int threads) {
+  groundDepth_.resize(static_cast<std::size_t>(nodesU_) * nodesV_);
+  footprintPerDepth_.resize(groundDepth_.size());
+  // An exception must not leave a parallel region: each row keeps its own, the first is rethrown.
+  std::vector<std::exception_ptr> failures(nodesV_);
+  parallelFor(0, nodesV_, threads, 1, [&](int j) {
+    try {
+      for (int i = 0; i < nodesU_; ++i) {
+        const Eigen::Vector3d direction = ray(i * kGroundGrid_px, j * kGroundGrid_px);
+        groundDepth_[j * nodesU_ + i] = groundDepth(direction);
+        footprintPerDepth_[j * nodesU_ + i] = footprintAlong(direction);
+      }
+    } catch (...) {
+      failures[j] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& failure : failures)
+    if (failure) std::rethrow_exception(failure);
+}
+
+std::vector<TexelRegion> SurfaceView::groundRegions() const {
+  constexpr double kFootprintMargin = 0.01;
+  std::vector<Eigen::Vector2d> nodes(groundDepth_.size());
+  std::vector<double> footprints(groundDepth_.size());
+  for (int j = 0; j < nodesV_; ++j) {
+    for (int i = 0; i < nodesU_; ++i) {
+      const std::size_t n = static_cast<std::size_t>(j) * nodesU_ + i;
+      nodes[n] = (centre_ + groundDepth_[n] * ray(i * kGroundGrid_px, j * kGroundGrid_px)).head<2>();
+      footprints[n] = groundDepth_[n] * footprintPerDepth_[n];
+    }
+  }
+  std::vector<TexelRegion> regions;
+  regions.reserve(static_cast<std::size_t>(nodesU_ - 1) * (nodesV_ - 1));
+  for (int j = 0; j + 1 < nodesV_; ++j) {
+    for (int i = 0; i + 1 < nodesU_; ++i) {
+      TexelRegion region;
+      double low = std::numeric_limits<double>::infinity(), high = 0.0;
+      const int corner = j * nodesU_ + i;
+      for (const int n : {corner, corner + 1, corner + nodesU_, corner + nodesU_ + 1}) {
+        region.box.extend(nodes[n]);
+        low = std::min(low, footprints[n]), high = std::max(high, footprints[n]);
+      }
+      region.box.min().array() -= high;
+      region.box.max().array() += high;
+      region.minFootprint_m = static_cast<float>(low * (1.0 - kFootprintMargin));
+      region.maxFootprint_m = static_cast<float>(high * (1.0 + kFootprintMargin));
+      regions.push_back(region);
+    }
+  }
+  return regions;
 }
 
 inline Eigen::Vector3d SurfaceView::ray(double u, double v) const {
@@ -117,7 +169,8 @@ void SurfaceView::listObstacles(double bottom) {
   tilesU_ = (camera_.width + kTile_px - 1) / kTile_px;
   tilesV_ = (camera_.height + kTile_px - 1) / kTile_px;
   tiles_.assign(static_cast<std::size_t>(tilesU_) * tilesV_, {});
-  // Each obstacle goes to the tiles its 3D bounding box covers in the image.
+  // Each obstacle goes to the tiles its 3D bounding box covers in the image,
+  // with the pixels that box covers (one pixel wider on each side).
   auto add = [&](const Eigen::AlignedBox3d& box, int id) {
     Eigen::AlignedBox2d image;
     for (int c = 0; c < 8; ++c) {
@@ -128,12 +181,14 @@ void SurfaceView::listObstacles(double bottom) {
       }
       image.extend(camera_.intrinsics.project(p));
     }
-    const int u0 = std::max(0, static_cast<int>(std::floor((image.min().x() - 1.0) / kTile_px)));
-    const int v0 = std::max(0, static_cast<int>(std::floor((image.min().y() - 1.0) / kTile_px)));
-    const int u1 = std::min(tilesU_ - 1, static_cast<int>(std::floor((image.max().x() + 1.0) / kTile_px)));
-    const int v1 = std::min(tilesV_ - 1, static_cast<int>(std::floor((image.max().y() + 1.0) / kTile_px)));
-    for (int tv = v0; tv <= v1; ++tv)
-      for (int tu = u0; tu <= u1; ++tu) tile(tu, tv).push_back(id);
+    const Eigen::Vector2d low = image.min().array() - 1.0, high = image.max().array() + 1.0;
+    if (high.x() < 0.0 || high.y() < 0.0 || low.x() > camera_.width - 1 || low.y() > camera_.height - 1) return;
+    const ObstacleSpan span{id, std::max(0, static_cast<int>(std::floor(low.x()))),
+                            std::min(camera_.width - 1, static_cast<int>(std::ceil(high.x()))),
+                            std::max(0, static_cast<int>(std::floor(low.y()))),
+                            std::min(camera_.height - 1, static_cast<int>(std::ceil(high.y())))};
+    for (int tv = span.v0 / kTile_px; tv <= span.v1 / kTile_px; ++tv)
+      for (int tu = span.u0 / kTile_px; tu <= span.u1 / kTile_px; ++tu) tile(tu, tv).push_back(span);
   };
   for (std::size_t i = 0; i < obstacles_.trees.size(); ++i) {
     const Terrain::Tree& t = obstacles_.trees[i];
@@ -150,30 +205,82 @@ void SurfaceView::listObstacles(double bottom) {
   }
 }
 
+bool SurfaceView::meets(int id, const Eigen::Vector3d& direction, double& depth, SurfaceHit& hit) const {
+  if (id >= 0) {
+    const double t = crownDepth(centre_, direction, obstacles_.trees[id]);
+    if (!(t < depth)) return false;
+    depth = t, hit.tree = &obstacles_.trees[id], hit.building = nullptr;
+  } else {
+    const double t = buildingDepth(centre_, direction, obstacles_.buildings[-1 - id]);
+    if (!(t < depth)) return false;
+    depth = t, hit.building = &obstacles_.buildings[-1 - id], hit.tree = nullptr;
+  }
+  hit.point = centre_ + depth * direction;
+  return true;
+}
+
 SurfaceHit SurfaceView::hit(double u, double v) const {
   const Eigen::Vector3d direction = ray(u, v);
   double depth = interpolatedGroundDepth(u, v);
   SurfaceHit hit;
+  hit.point = centre_ + depth * direction;
   const int tu = std::clamp(static_cast<int>(std::floor(u / kTile_px)), 0, tilesU_ - 1);
   const int tv = std::clamp(static_cast<int>(std::floor(v / kTile_px)), 0, tilesV_ - 1);
-  for (int id : tiles_[tv * tilesU_ + tu]) {
-    if (id >= 0) {
-      const double t = crownDepth(centre_, direction, obstacles_.trees[id]);
-      if (t < depth) depth = t, hit.tree = &obstacles_.trees[id], hit.building = nullptr;
-    } else {
-      const double t = buildingDepth(centre_, direction, obstacles_.buildings[-1 - id]);
-      if (t < depth) depth = t, hit.building = &obstacles_.buildings[-1 - id], hit.tree = nullptr;
-    }
-  }
-  hit.point = centre_ + depth * direction;
+  for (const ObstacleSpan& span : tiles_[tv * tilesU_ + tu])
+    if (u >= span.u0 - 0.5 && u <= span.u1 + 0.5 && v >= span.v0 - 0.5 && v <= span.v1 + 0.5)
+      meets(span.id, direction, depth, hit);
   return hit;
 }
 
-double SurfaceView::footprint(const SurfaceHit& hit) const {
-  const Eigen::Vector3d toHit = hit.point - centre_;
+void SurfaceView::hitRow(int v, int first, int count, SurfaceHit* hits, float* footprints) const {
+  const int end = first + count;
+  const double gv = std::clamp(static_cast<double>(v) / kGroundGrid_px, 0.0, nodesV_ - 1.0);
+  const int j = std::min(static_cast<int>(gv), nodesV_ - 2);
+  const double b = gv - j;
+  auto inRow = [&](const std::vector<double>& nodeValues, int i) {
+    return (1.0 - b) * nodeValues[j * nodesU_ + i] + b * nodeValues[(j + 1) * nodesU_ + i];
+  };
+  const Eigen::Vector3d rayStep = worldFromCameraRotation_.col(0) / camera_.intrinsics.fx;
+  for (int u = first; u < end;) {
+    // The cell of pixel u (the last cell also holds a pixel on the grid's last node): ground depth, ray and
+    // footprint per unit depth at its left side in this row, and their steps along u.
+    const int i = std::min(u / kGroundGrid_px, nodesU_ - 2), left = i * kGroundGrid_px;
+    const int cellEnd = i == nodesU_ - 2 ? end : std::min(end, left + kGroundGrid_px);
+    const double depthLeft = inRow(groundDepth_, i);
+    const double depthStep = (inRow(groundDepth_, i + 1) - depthLeft) / kGroundGrid_px;
+    const double scaleLeft = inRow(footprintPerDepth_, i);
+    const double scaleStep = (inRow(footprintPerDepth_, i + 1) - scaleLeft) / kGroundGrid_px;
+    const Eigen::Vector3d rayLeft = ray(left, v);
+    for (; u < cellEnd; ++u) {
+      const double steps = u - left;
+      const double depth = depthLeft + steps * depthStep;
+      hits[u - first] = SurfaceHit{centre_ + depth * (rayLeft + steps * rayStep), nullptr, nullptr};
+      footprints[u - first] = static_cast<float>(depth * (scaleLeft + steps * scaleStep));
+    }
+  }
+  // Then each obstacle over the pixels of its span in this row, tile by tile (a pixel lies in one tile).
+  const int tv = std::min(v / kTile_px, tilesV_ - 1);
+  for (int tu = first / kTile_px; tu <= std::min((end - 1) / kTile_px, tilesU_ - 1); ++tu) {
+    for (const ObstacleSpan& span : tiles_[tv * tilesU_ + tu]) {
+      if (v < span.v0 || v > span.v1) continue;
+      const int from = std::max({first, tu * kTile_px, span.u0}),
+                to = std::min({end - 1, tu * kTile_px + kTile_px - 1, span.u1});
+      for (int u = from; u <= to; ++u) {
+        const Eigen::Vector3d direction = ray(u, v);
+        SurfaceHit& hit = hits[u - first];
+        double depth = (hit.point.z() - centre_.z()) / direction.z();  // to the ground, or a nearer obstacle
+        if (meets(span.id, direction, depth, hit)) footprints[u - first] = static_cast<float>(footprint(hit));
+      }
+    }
+  }
+}
+
+double SurfaceView::footprintAlong(const Eigen::Vector3d& toHit) const {
   const double range = toHit.norm();
   const double obliquity = std::max(0.25, std::abs(toHit.z()) / range);  // cosine of the incidence on level ground
   return range / meanFocal_ / std::sqrt(obliquity);
 }
+
+double SurfaceView::footprint(const SurfaceHit& hit) const { return footprintAlong(hit.point - centre_); }
 
 }  // namespace lrsvo

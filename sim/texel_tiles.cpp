@@ -3,25 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <string>
-#include <tuple>
 #include <utility>
 
 #include "graph/error.h"
 #include "graph/parallel_for.h"
-#include "sim/inline_math.h"
 
 namespace lrsvo {
-namespace {
-
-// floor(i / kDivisor) for any sign of i.
-template <std::int64_t kDivisor>
-std::int64_t floorDivide(std::int64_t i) {
-  return (i >= 0 ? i : i - (kDivisor - 1)) / kDivisor;
-}
-
-}  // namespace
-
 std::size_t TexelTiles::KeyHash::operator()(const Key& k) const {
   std::uint64_t h = static_cast<std::uint64_t>(k.tx) * 0x9e3779b97f4a7c15ULL;
   h ^= static_cast<std::uint64_t>(k.ty) * 0xc2b2ae3d27d4eb4fULL + static_cast<std::uint64_t>(k.level);
@@ -38,138 +25,97 @@ TexelTiles::TexelTiles(Function function, double baseTexel_m, int keepImages)
   }
 }
 
-inline void TexelTiles::levels(double footprint_m, int& level, double& fraction) const {
-  // footprint = m 2^e base with m in [0.5, 1): level e - 1 (texel s <= footprint < 2 s), blended towards the
-  // next level linearly in the footprint (exact powers of two, no logarithm per pixel).
-  int exponent;
-  const double mantissa = frexpInline(footprint_m / base_m_, &exponent);
-  level = exponent - 1, fraction = 2.0 * mantissa - 1.0;
-  if (level < 0 || !(mantissa > 0.0)) level = 0, fraction = 0.0;  // finer than the base texel: the base level
-  if (level > kLevels - 2 || std::isinf(mantissa)) level = kLevels - 2, fraction = 0.0;
+float TexelTiles::texel(std::int64_t ix, std::int64_t iy, int level) const {
+  const double s = texel_[level];
+  return function_(static_cast<double>(ix) * s, static_cast<double>(iy) * s, s);
 }
 
-inline std::int64_t TexelTiles::texelIndex(double coordinate, int level) const {
-  return static_cast<std::int64_t>(floorInline(coordinate * inverseTexel_[level]));
+std::vector<TexelTiles::TileRange> TexelTiles::tileRanges(const std::vector<TexelRegion>& regions) const {
+  // A region wider than this many tiles at one level is left to sample()'s
+  // direct evaluation: a guard against a degenerate region allocating a huge grid.
+  constexpr std::int64_t kMaxTilesPerRegion = 4096;
+  std::vector<TileRange> ranges;
+  ranges.reserve(3 * regions.size());
+  for (const TexelRegion& region : regions) {
+    const Eigen::AlignedBox2d& box = region.box;
+    if (box.isEmpty() || !box.min().allFinite() || !box.max().allFinite()) continue;
+    int lowest, highest;
+    double fraction;
+    levels(region.minFootprint_m, lowest, fraction);
+    levels(region.maxFootprint_m, highest, fraction);
+    if (fraction > 0.0) ++highest;  // the blend reads the next level up
+    for (int level = lowest; level <= highest; ++level) {
+      const TileRange range{
+          texelIndex(box.min().x(), level) >> kTileBits, texelIndex(box.min().y(), level) >> kTileBits,
+          texelIndex(box.max().x(), level) >> kTileBits, texelIndex(box.max().y(), level) >> kTileBits, level};
+      if ((range.tx1 - range.tx0 + 1) * (range.ty1 - range.ty0 + 1) <= kMaxTilesPerRegion) ranges.push_back(range);
+    }
+  }
+  return ranges;
 }
 
-inline TexelTiles::Key TexelTiles::keyOf(double x, double y, int level) const {
-  // Texel indices first, then tiles (an exact division of integers), so that
-  // bilinear() finds the texel and its right and lower neighbours in the tile.
-  return {floorDivide<kTile>(texelIndex(x, level)), floorDivide<kTile>(texelIndex(y, level)), level};
-}
-
-std::vector<TexelTiles::Key> TexelTiles::listKeys(std::size_t count, const PointSource& point, int threads) const {
-  // Blocks of points in parallel; within a block, neighbouring pixels mostly
-  // share tiles (at one or two levels): skip a key equal to the last one
-  // listed at its level.
-  constexpr int kBlock = 4096;
-  const int blocks = static_cast<int>((count + kBlock - 1) / kBlock);
-  std::vector<std::vector<Key>> perBlock(blocks);
-  auto byLevelAndPosition = [](const Key& a, const Key& b) {
-    return std::tie(a.level, a.ty, a.tx) < std::tie(b.level, b.ty, b.tx);
-  };
-  parallelFor(0, blocks, threads, 1, [&](int b) {
-    std::vector<Key>& wanted = perBlock[b];
-    std::array<Key, kLevels> lastListed;
-    lastListed.fill(Key{0, 0, -1});
-    const std::size_t end = std::min(count, static_cast<std::size_t>(b + 1) * kBlock);
-    Eigen::Vector2d xy;
-    float footprint;
-    for (std::size_t i = static_cast<std::size_t>(b) * kBlock; i < end; ++i) {
-      if (!point(i, xy, footprint)) continue;
-      int level;
-      double fraction;
-      levels(footprint, level, fraction);
-      for (int l = level; l <= level + (fraction > 0.0); ++l) {
-        const Key key = keyOf(xy.x(), xy.y(), l);
-        if (key == lastListed[l]) continue;
-        wanted.push_back(key);
-        lastListed[l] = key;
+void TexelTiles::require(const std::vector<TexelRegion>& regions, int threads) {
+  ++images_;
+  layOut(tileRanges(regions));
+  // Find or make every tile the grids list; fill the new ones on all threads.
+  std::vector<std::pair<Key, Tile*>> missing;
+  for (int level = 0; level < kLevels; ++level) {
+    LevelGrid& grid = grids_[level];
+    for (std::int64_t row = 0; row < grid.height; ++row) {
+      for (std::int64_t column = 0; column < grid.width; ++column) {
+        const float*& slot = grid.texels[row * grid.width + column];
+        if (slot == nullptr) continue;
+        const Key key{grid.tx0 + column, grid.ty0 + row, level};
+        auto found = tiles_.find(key);
+        if (found == tiles_.end()) {
+          found = tiles_.emplace(key, std::make_unique<Tile>()).first;
+          missing.emplace_back(key, found->second.get());
+        }
+        Tile& tile = *found->second;
+        tile.lastUsed = images_;
+        tile.texels.resize((kTile + 1) * (kTile + 1));  // filled below; sample() keeps a pointer to its data
+        slot = tile.texels.data();
       }
     }
-    std::sort(wanted.begin(), wanted.end(), byLevelAndPosition);
-    wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
-  });
-  std::vector<Key> keys;
-  for (const std::vector<Key>& block : perBlock) keys.insert(keys.end(), block.begin(), block.end());
-  std::sort(keys.begin(), keys.end(), byLevelAndPosition);
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  return keys;
-}
-
-void TexelTiles::require(std::size_t count, const PointSource& point, int threads) {
-  ++images_;
-  const std::vector<Key> keys = listKeys(count, point, threads);
-  std::vector<Tile*> missing;
-  std::vector<Key> missingKeys;
-  for (const Key& key : keys) {
-    auto found = tiles_.find(key);
-    if (found == tiles_.end()) {
-      found = tiles_.emplace(key, std::make_unique<Tile>()).first;
-      missing.push_back(found->second.get());
-      missingKeys.push_back(key);
-    }
-    found->second->lastUsed = images_;
   }
   parallelFor(0, static_cast<int>(missing.size()), threads, 1, [&](int i) {
-    const Key& key = missingKeys[i];
-    const double s = texel_[key.level];
-    std::vector<float>& texels = missing[i]->texels;
-    texels.resize((kTile + 1) * (kTile + 1));
+    const auto& [key, tile] = missing[i];
     for (int v = 0; v <= kTile; ++v)
       for (int u = 0; u <= kTile; ++u)
-        texels[v * (kTile + 1) + u] =
-            function_(static_cast<double>(key.tx * kTile + u) * s, static_cast<double>(key.ty * kTile + v) * s, s);
+        tile->texels[v * (kTile + 1) + u] = texel(key.tx * kTile + u, key.ty * kTile + v, key.level);
   });
   std::erase_if(tiles_, [&](const auto& entry) { return entry.second->lastUsed <= images_ - keep_; });
-  layOut(keys);
 }
 
-void TexelTiles::layOut(const std::vector<Key>& keys) {
-  for (LevelGrid& grid : grids_) grid = LevelGrid{};
-  // keys are sorted by level: each level's keys form one run.
-  for (auto first = keys.begin(); first != keys.end();) {
-    const int level = first->level;
-    const auto last = std::find_if(first, keys.end(), [&](const Key& k) { return k.level != level; });
-    LevelGrid& grid = grids_[level];
-    std::int64_t tx1 = first->tx, ty1 = first->ty;
-    grid.tx0 = first->tx, grid.ty0 = first->ty;
-    for (auto k = first; k != last; ++k) {
-      grid.tx0 = std::min(grid.tx0, k->tx), tx1 = std::max(tx1, k->tx);
-      grid.ty0 = std::min(grid.ty0, k->ty), ty1 = std::max(ty1, k->ty);
+void TexelTiles::layOut(const std::vector<TileRange>& ranges) {
+  // Each level's grid spans the bounding box of its ranges; a slot a range
+  // covers holds this marker until require() points it at its tile's texels.
+  static const float kWanted = 0.0f;
+  std::array<TileRange, kLevels> bounds;
+  std::array<bool, kLevels> used{};
+  for (const TileRange& r : ranges) {
+    TileRange& b = bounds[r.level];
+    if (!used[r.level]) {
+      b = r, used[r.level] = true;
+      continue;
     }
-    grid.width = tx1 - grid.tx0 + 1, grid.height = ty1 - grid.ty0 + 1;
-    grid.tiles.assign(static_cast<std::size_t>(grid.width * grid.height), nullptr);
-    for (auto k = first; k != last; ++k)
-      grid.tiles[(k->ty - grid.ty0) * grid.width + (k->tx - grid.tx0)] = tiles_.at(*k).get();
-    first = last;
+    b.tx0 = std::min(b.tx0, r.tx0), b.ty0 = std::min(b.ty0, r.ty0);
+    b.tx1 = std::max(b.tx1, r.tx1), b.ty1 = std::max(b.ty1, r.ty1);
   }
-}
-
-inline float TexelTiles::bilinear(double x, double y, int level) const {
-  const double gx = x * inverseTexel_[level], gy = y * inverseTexel_[level];
-  const double fx = floorInline(gx), fy = floorInline(gy);
-  const auto ix = static_cast<std::int64_t>(fx), iy = static_cast<std::int64_t>(fy);
-  const std::int64_t tx = floorDivide<kTile>(ix), ty = floorDivide<kTile>(iy);
-  const LevelGrid& grid = grids_[level];
-  const std::int64_t column = tx - grid.tx0, row = ty - grid.ty0;
-  const Tile* tile = column >= 0 && column < grid.width && row >= 0 && row < grid.height
-                         ? grid.tiles[row * grid.width + column]
-                         : nullptr;
-  if (tile == nullptr) throw Error("texel tiles: sample() outside the tiles of the last require()");
-  const int u = static_cast<int>(ix - tx * kTile), v = static_cast<int>(iy - ty * kTile);
-  const float* t = &tile->texels[v * (kTile + 1) + u];
-  const double a = gx - fx, b = gy - fy;
-  return static_cast<float>((1.0 - b) * ((1.0 - a) * t[0] + a * t[1]) +
-                            b * ((1.0 - a) * t[kTile + 1] + a * t[kTile + 2]));
-}
-
-float TexelTiles::sample(double x, double y, double footprint_m) const {
-  int level;
-  double fraction;
-  levels(footprint_m, level, fraction);
-  const float fine = bilinear(x, y, level);
-  return fraction > 0.0 ? static_cast<float>((1.0 - fraction) * fine + fraction * bilinear(x, y, level + 1)) : fine;
+  for (int level = 0; level < kLevels; ++level) {
+    LevelGrid& grid = grids_[level];
+    grid = LevelGrid{};
+    if (!used[level]) continue;
+    grid.tx0 = bounds[level].tx0, grid.ty0 = bounds[level].ty0;
+    grid.width = bounds[level].tx1 - grid.tx0 + 1, grid.height = bounds[level].ty1 - grid.ty0 + 1;
+    grid.texels.assign(static_cast<std::size_t>(grid.width * grid.height), nullptr);
+  }
+  for (const TileRange& r : ranges) {
+    LevelGrid& grid = grids_[r.level];
+    for (std::int64_t ty = r.ty0; ty <= r.ty1; ++ty)
+      for (std::int64_t tx = r.tx0; tx <= r.tx1; ++tx)
+        grid.texels[(ty - grid.ty0) * grid.width + (tx - grid.tx0)] = &kWanted;
+  }
 }
 
 }  // namespace lrsvo

@@ -1,15 +1,25 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <unordered_map>
 #include <vector>
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "sim/inline_math.h"
 
 namespace lrsvo {
+
+// A part of the ground an image will sample: a box in world x, y and the
+// range of the pixel footprints there.
+struct TexelRegion {
+  Eigen::AlignedBox2d box;
+  float minFootprint_m = 0.0f, maxFootprint_m = 0.0f;
+};
 
 // A lazily filled, world-aligned mipmap of a costly 2D texture
 // f(x, y, footprint_m): level L holds f at texels spaced s_L = base * 2^L,
@@ -19,9 +29,10 @@ namespace lrsvo {
 // w between them (tri-linear filtering), so each texel is
 // computed once for many frames of a slowly moving camera. Values depend only
 // on the texture and the position, never on what is cached: the same input
-// gives the same image. require() also lays the tiles of the current image
-// out in a small grid per level, so that sample() finds its tile by indexing
-// (no hashing, no locks) on any number of threads.
+// gives the same image, and a texel whose tile the last require() did not
+// list is computed on the spot, to the same value. require() also lays the
+// tiles of the current image out in a small grid per level, so that sample()
+// finds its tile by indexing (no hashing, no locks) on any number of threads.
 class TexelTiles {
  public:
   using Function = std::function<float(double x, double y, double footprint_m)>;
@@ -29,22 +40,18 @@ class TexelTiles {
   // Throws lrsvo::Error on a non-positive base texel or keepImages < 1.
   TexelTiles(Function function, double baseTexel_m, int keepImages = 8);
 
-  // Point i of `count` to be sampled: fills its (x, y) and footprint and
-  // returns true, or returns false when it will not be sampled. Called from
-  // up to `threads` threads at once.
-  using PointSource = std::function<bool(std::size_t i, Eigen::Vector2d& xy, float& footprint_m)>;
-
-  // Fills every tile that sample() will read for the `count` points that
-  // `point` gives, on up to `threads` threads; tiles no image has read for
-  // keepImages calls are dropped. Not safe while another thread samples.
-  void require(std::size_t count, const PointSource& point, int threads);
-  // The texture at (x, y) for a pixel footprint; (x, y, footprint) must have
-  // been passed to the last require(). Safe on many threads at once.
+  // Fills every tile that samples inside the regions will read, on up to
+  // `threads` threads (`function` is called from all of them); tiles no image
+  // has read for keepImages calls are dropped. Not safe while another thread
+  // samples.
+  void require(const std::vector<TexelRegion>& regions, int threads);
+  // The texture at (x, y) for a pixel footprint. Safe on many threads at once.
   float sample(double x, double y, double footprint_m) const;
 
  private:
   static constexpr int kLevels = 32;  // up to 2^31 base texels: far coarser than any footprint
-  static constexpr int kTile = 64;    // texels per side (+ one shared row and column for interpolation)
+  static constexpr int kTileBits = 6;
+  static constexpr int kTile = 1 << kTileBits;  // texels per side (+ one shared row and column for interpolation)
   struct Key {
     std::int64_t tx, ty;
     int level;
@@ -57,20 +64,33 @@ class TexelTiles {
     std::vector<float> texels;  // (kTile + 1)^2, row-major in y
     std::int64_t lastUsed = 0;
   };
-  // The tiles of one level that the last require() listed, over the bounding
-  // box of their indices (null where none was listed).
+  // The texels of the tiles of one level that the last require() listed,
+  // over the bounding box of their indices (null where none was listed).
   struct LevelGrid {
     std::int64_t tx0 = 0, ty0 = 0;
     std::int64_t width = 0, height = 0;
-    std::vector<const Tile*> tiles;
+    std::vector<const float*> texels;
+  };
+  // The tiles of one level that one region covers, inclusive.
+  struct TileRange {
+    std::int64_t tx0, ty0, tx1, ty1;
+    int level;
   };
 
   void levels(double footprint_m, int& level, double& fraction) const;
   std::int64_t texelIndex(double coordinate, int level) const;
-  Key keyOf(double x, double y, int level) const;
-  std::vector<Key> listKeys(std::size_t count, const PointSource& point, int threads) const;
-  void layOut(const std::vector<Key>& keys);
-  float bilinear(double x, double y, int level) const;
+  float texel(std::int64_t ix, std::int64_t iy, int level) const;  // f at a lattice point, uncached
+  std::vector<TileRange> tileRanges(const std::vector<TexelRegion>& regions) const;
+  void layOut(const std::vector<TileRange>& ranges);
+  // Where bilinear interpolation at (x, y) on a level reads: its top-left
+  // texel in the cache (null if not cached) and the weights of the texels to
+  // the right (a) and below (b).
+  struct Lookup {
+    const float* texels;
+    double a, b;
+  };
+  Lookup lookup(double x, double y, int level) const;
+  float bilinear(const Lookup& at, double x, double y, int level) const;
 
   Function function_;
   double base_m_;
@@ -81,5 +101,59 @@ class TexelTiles {
   std::unordered_map<Key, std::unique_ptr<Tile>, KeyHash> tiles_;
   std::array<LevelGrid, kLevels> grids_;
 };
+
+// The per-pixel path, inline: the renderer calls sample() for every ground pixel.
+
+inline void TexelTiles::levels(double footprint_m, int& level, double& fraction) const {
+  // footprint = m 2^e base with m in [0.5, 1): level e - 1 (texel s <= footprint < 2 s), blended towards the
+  // next level linearly in the footprint (exact powers of two, no logarithm per pixel).
+  int exponent;
+  const double mantissa = frexpInline(footprint_m * inverseTexel_[0], &exponent);
+  level = exponent - 1, fraction = 2.0 * mantissa - 1.0;
+  if (level < 0 || !(mantissa > 0.0)) level = 0, fraction = 0.0;  // finer than the base texel: the base level
+  if (level > kLevels - 2 || std::isinf(mantissa)) level = kLevels - 2, fraction = 0.0;
+}
+
+inline std::int64_t TexelTiles::texelIndex(double coordinate, int level) const {
+  return floorIndex(coordinate * inverseTexel_[level]);
+}
+
+inline TexelTiles::Lookup TexelTiles::lookup(double x, double y, int level) const {
+  const double gx = x * inverseTexel_[level], gy = y * inverseTexel_[level];
+  const std::int64_t ix = floorIndex(gx), iy = floorIndex(gy);
+  // Texel indices first, then tiles (>> is floor division, also below zero), so
+  // that the texel and its right and lower neighbours lie in one tile.
+  const std::int64_t tx = ix >> kTileBits, ty = iy >> kTileBits;
+  const LevelGrid& grid = grids_[level];
+  const std::int64_t column = tx - grid.tx0, row = ty - grid.ty0;
+  const float* texels = column >= 0 && column < grid.width && row >= 0 && row < grid.height
+                            ? grid.texels[row * grid.width + column]
+                            : nullptr;
+  if (texels != nullptr) texels += (iy - (ty << kTileBits)) * (kTile + 1) + (ix - (tx << kTileBits));
+  return {texels, gx - static_cast<double>(ix), gy - static_cast<double>(iy)};
+}
+
+inline float TexelTiles::bilinear(const Lookup& at, double x, double y, int level) const {
+  float t00, t10, t01, t11;
+  if (at.texels != nullptr) [[likely]] {
+    const float* t = at.texels;
+    t00 = t[0], t10 = t[1], t01 = t[kTile + 1], t11 = t[kTile + 2];
+  } else {
+    const std::int64_t ix = floorIndex(x * inverseTexel_[level]), iy = floorIndex(y * inverseTexel_[level]);
+    t00 = texel(ix, iy, level), t10 = texel(ix + 1, iy, level);
+    t01 = texel(ix, iy + 1, level), t11 = texel(ix + 1, iy + 1, level);
+  }
+  const double a = at.a, b = at.b;
+  return static_cast<float>((1.0 - b) * ((1.0 - a) * t00 + a * t10) + b * ((1.0 - a) * t01 + a * t11));
+}
+
+inline float TexelTiles::sample(double x, double y, double footprint_m) const {
+  int level;
+  double fraction;
+  levels(footprint_m, level, fraction);
+  const float fine = bilinear(lookup(x, y, level), x, y, level);
+  if (!(fraction > 0.0)) return fine;
+  return static_cast<float>((1.0 - fraction) * fine + fraction * bilinear(lookup(x, y, level + 1), x, y, level + 1));
+}
 
 }  // namespace lrsvo
