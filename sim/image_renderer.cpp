@@ -1,6 +1,7 @@
 #include "sim/image_renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -19,6 +20,11 @@ namespace {
 constexpr std::uint64_t kGainStream = 0x6761696e, kNoiseStream = 0x6e6f6973;  // "gain", "nois"
 constexpr int kGainSinusoids = 3;
 constexpr int kRowsPerChunk = 8;  // ~100 chunks an image: both threads stay busy to the last row
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point from, Clock::time_point to) {
+  return std::chrono::duration<double>(to - from).count();
+}
 
 }  // namespace
 
@@ -50,8 +56,11 @@ double ImageRenderer::gain(double time_s, int cameraIndex) const {
 }
 
 cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d& cameraFromWorld) const {
+  const auto start = Clock::now();
   const SurfaceView view(terrain_, camera, cameraFromWorld, options_.threads);
+  const auto viewed = Clock::now();
   texture_.prepare(view.groundRegions(), options_.threads);
+  const auto prepared = Clock::now();
   cv::Mat scene(camera.height, camera.width, CV_32FC1);
   const int chunks = (camera.height + kRowsPerChunk - 1) / kRowsPerChunk;
   parallelFor(0, chunks, options_.threads, 1, [&](int chunk) {
@@ -62,12 +71,17 @@ cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d
       texture_.greyRow(hits.data(), footprints.data(), camera.width, scene.ptr<float>(v));
     }
   });
+  ++times_.images;
+  times_.view_s += seconds(start, viewed);
+  times_.texture_s += seconds(viewed, prepared);
+  times_.shade_s += seconds(prepared, Clock::now());
   return scene;
 }
 
 cv::Mat ImageRenderer::render(const Camera& camera, const Eigen::Isometry3d& cameraFromWorld, double time_s, int frame,
                               int cameraIndex) const {
   cv::Mat image = renderScene(camera, cameraFromWorld);
+  const auto start = Clock::now();
   image *= gain(time_s, cameraIndex);
   if (options_.vignetting > 0.0) vignette(camera, image);
   if (options_.blurSigma_px > 0.0) cv::GaussianBlur(image, image, cv::Size(0, 0), options_.blurSigma_px);
@@ -87,6 +101,7 @@ cv::Mat ImageRenderer::render(const Camera& camera, const Eigen::Isometry3d& cam
     }
     band.convertTo(out.rowRange(rows), CV_8UC1);  // rounds and saturates to 0..255
   });
+  times_.sensor_s += seconds(start, Clock::now());
   return out;
 }
 

@@ -21,6 +21,16 @@ struct RenderOptions {
   int threads = 2;                 // rows are rendered in parallel
 };
 
+// Where the renderer's time goes: wall seconds summed over the images rendered.
+struct RenderTimes {
+  int images = 0;
+  double view_s = 0.0;     // each view's ground grid and obstacle lists
+  double texture_s = 0.0;  // the texture's caches (making the texel tiles an image needs)
+  double shade_s = 0.0;    // tracing and shading every pixel
+  double sensor_s = 0.0;   // gain, vignetting, blur, noise, 8-bit conversion (render() only)
+  double total_s() const { return view_s + texture_s + shade_s + sensor_s; }
+};
+
 // Renders what a pinhole camera (no distortion) sees of a terrain: each
 // pixel's ray meets the surface (sim/surface_view.h) and takes the texture's
 // grey there, averaged over the pixel's footprint on the surface so that
@@ -43,6 +53,8 @@ class ImageRenderer {
   cv::Mat renderScene(const Camera& camera, const Eigen::Isometry3d& cameraFromWorld) const;
   // The relative gain of camera `cameraIndex` at time_s, 1 +- exposureDrift.
   double gain(double time_s, int cameraIndex) const;
+  // The time of every image rendered so far, by stage.
+  const RenderTimes& times() const { return times_; }
 
  private:
   void vignette(const Camera& camera, cv::Mat& image) const;
@@ -51,6 +63,7 @@ class ImageRenderer {
   const SurfaceTexture& texture_;
   RenderOptions options_;
   std::uint64_t seed_;
+  mutable RenderTimes times_;
 };
 
 }  // namespace lrsvo

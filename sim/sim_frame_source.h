@@ -42,6 +42,8 @@ class SimFrameSource : public FrameSource {
   StereoFrame render(int index) const;
   const SimScenario& scenario() const { return scenario_; }
   const FlightTruth& truth() const { return truth_; }
+  // The renderer's time so far, by stage.
+  const RenderTimes& renderTimes() const { return renderer_.times(); }
 
  private:
   StereoFrame renderBase(int index) const;  // images[0] only

@@ -183,10 +183,12 @@ void SurfaceView::listObstacles(double bottom) {
     }
     const Eigen::Vector2d low = image.min().array() - 1.0, high = image.max().array() + 1.0;
     if (high.x() < 0.0 || high.y() < 0.0 || low.x() > camera_.width - 1 || low.y() > camera_.height - 1) return;
-    const ObstacleSpan span{id, std::max(0, static_cast<int>(std::floor(low.x()))),
-                            std::min(camera_.width - 1, static_cast<int>(std::ceil(high.x()))),
-                            std::max(0, static_cast<int>(std::floor(low.y()))),
-                            std::min(camera_.height - 1, static_cast<int>(std::ceil(high.y())))};
+    // Clamped into the image before the conversion: a corner just in front of the camera projects far outside.
+    auto pixel = [](double x, int last) { return std::clamp(x, 0.0, static_cast<double>(last)); };
+    const ObstacleSpan span{id, static_cast<int>(std::floor(pixel(low.x(), camera_.width - 1))),
+                            static_cast<int>(std::ceil(pixel(high.x(), camera_.width - 1))),
+                            static_cast<int>(std::floor(pixel(low.y(), camera_.height - 1))),
+                            static_cast<int>(std::ceil(pixel(high.y(), camera_.height - 1)))};
     for (int tv = span.v0 / kTile_px; tv <= span.v1 / kTile_px; ++tv)
       for (int tu = span.u0 / kTile_px; tu <= span.u1 / kTile_px; ++tu) tile(tu, tv).push_back(span);
   };
