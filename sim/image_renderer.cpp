@@ -10,7 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "graph/error.h"
-#include "graph/parallel_for.h"
+#include "sim/pool_for.h"
 #include "sim/seed_mix.h"
 #include "sim/surface_view.h"
 
@@ -63,7 +63,7 @@ cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d
   const auto prepared = Clock::now();
   cv::Mat scene(camera.height, camera.width, CV_32FC1);
   const int chunks = (camera.height + kRowsPerChunk - 1) / kRowsPerChunk;
-  parallelFor(0, chunks, options_.threads, 1, [&](int chunk) {
+  poolFor(0, chunks, options_.threads, [&](int chunk) {
     std::vector<SurfaceHit> hits(camera.width);
     std::vector<float> footprints(camera.width);
     for (int v = chunk * kRowsPerChunk; v < std::min(camera.height, (chunk + 1) * kRowsPerChunk); ++v) {
@@ -89,7 +89,7 @@ cv::Mat ImageRenderer::render(const Camera& camera, const Eigen::Isometry3d& cam
   // draws its noise from its own seed, so the image does not depend on the threads.
   cv::Mat out(image.size(), CV_8UC1);
   const int chunks = (image.rows + kRowsPerChunk - 1) / kRowsPerChunk;
-  parallelFor(0, chunks, options_.threads, 1, [&](int chunk) {
+  poolFor(0, chunks, options_.threads, [&](int chunk) {
     const cv::Range rows(chunk * kRowsPerChunk, std::min(image.rows, (chunk + 1) * kRowsPerChunk));
     cv::Mat band = image.rowRange(rows);
     if (options_.noiseSigma_grey > 0.0) {

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "graph/error.h"
-#include "graph/parallel_for.h"
 #include "sim/footprint.h"
+#include "sim/pool_for.h"
 
 namespace lrsvo {
 namespace {
@@ -77,7 +77,7 @@ void SurfaceView::solveGroundGrid(int threads) {
   footprintPerDepth_.resize(groundDepth_.size());
   // An exception must not leave a parallel region: each row keeps its own, the first is rethrown.
   std::vector<std::exception_ptr> failures(nodesV_);
-  parallelFor(0, nodesV_, threads, 1, [&](int j) {
+  poolFor(0, nodesV_, threads, [&](int j) {
     try {
       for (int i = 0; i < nodesU_; ++i) {
         const Eigen::Vector3d direction = ray(i * kGroundGrid_px, j * kGroundGrid_px);

@@ -38,10 +38,10 @@ class SurfaceView {
   // hit(u, v) and footprint() for u = first .. first + count - 1 of row v
   // (inside the image), into hits[0 ..] and footprints[0 ..], to rounding:
   // within a cell of the ground grid the ray and the ground depth are linear
-  // in u, so they advance by a constant step (only the footprint's factor
-  // for the ray's direction is interpolated too, bilinearly between the
-  // nodes: 6e-4 relative at a 417 px focal length, 16 times less at 1667 px). Pixels
-  // under an obstacle's tile are checked against it as in hit().
+  // in u, so they advance by a constant step. Only the footprint differs
+  // more: its factor for the ray's direction is interpolated between the
+  // nodes (6e-4 relative at a 417 px focal length, 16 times less at 1667
+  // px). Each obstacle is tested over the pixels of its bounding box alone.
   void hitRow(int v, int first, int count, SurfaceHit* hits, float* footprints) const;
   // The ground this view sees, one region per cell of the ground grid: the
   // box of its corners' ground points, widened by a footprint, and their

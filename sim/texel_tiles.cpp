@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "graph/error.h"
-#include "graph/parallel_for.h"
+#include "sim/pool_for.h"
 
 namespace lrsvo {
 std::size_t TexelTiles::KeyHash::operator()(const Key& k) const {
@@ -78,7 +78,7 @@ void TexelTiles::require(const std::vector<TexelRegion>& regions, int threads) {
       }
     }
   }
-  parallelFor(0, static_cast<int>(missing.size()), threads, 1, [&](int i) {
+  poolFor(0, static_cast<int>(missing.size()), threads, [&](int i) {
     const auto& [key, tile] = missing[i];
     for (int v = 0; v <= kTile; ++v)
       for (int u = 0; u <= kTile; ++u)
