@@ -82,15 +82,9 @@ class TexelTiles {
   float texel(std::int64_t ix, std::int64_t iy, int level) const;  // f at a lattice point, uncached
   std::vector<TileRange> tileRanges(const std::vector<TexelRegion>& regions) const;
   void layOut(const std::vector<TileRange>& ranges);
-  // Where bilinear interpolation at (x, y) on a level reads: its top-left
-  // texel in the cache (null if not cached) and the weights of the texels to
-  // the right (a) and below (b).
-  struct Lookup {
-    const float* texels;
-    double a, b;
-  };
-  Lookup lookup(double x, double y, int level) const;
-  float bilinear(const Lookup& at, double x, double y, int level) const;
+  // Bilinear interpolation at (x, y) on a level: from its tile, or computed
+  // on the spot where the last require() listed none.
+  float bilinear(double x, double y, int level) const;
 
   Function function_;
   double base_m_;
@@ -118,7 +112,7 @@ inline std::int64_t TexelTiles::texelIndex(double coordinate, int level) const {
   return floorIndex(coordinate * inverseTexel_[level]);
 }
 
-inline TexelTiles::Lookup TexelTiles::lookup(double x, double y, int level) const {
+inline float TexelTiles::bilinear(double x, double y, int level) const {
   const double gx = x * inverseTexel_[level], gy = y * inverseTexel_[level];
   const std::int64_t ix = floorIndex(gx), iy = floorIndex(gy);
   // Texel indices first, then tiles (>> is floor division, also below zero), so
@@ -129,21 +123,15 @@ inline TexelTiles::Lookup TexelTiles::lookup(double x, double y, int level) cons
   const float* texels = column >= 0 && column < grid.width && row >= 0 && row < grid.height
                             ? grid.texels[row * grid.width + column]
                             : nullptr;
-  if (texels != nullptr) texels += (iy - (ty << kTileBits)) * (kTile + 1) + (ix - (tx << kTileBits));
-  return {texels, gx - static_cast<double>(ix), gy - static_cast<double>(iy)};
-}
-
-inline float TexelTiles::bilinear(const Lookup& at, double x, double y, int level) const {
   float t00, t10, t01, t11;
-  if (at.texels != nullptr) [[likely]] {
-    const float* t = at.texels;
+  if (texels != nullptr) [[likely]] {
+    const float* t = texels + (iy - (ty << kTileBits)) * (kTile + 1) + (ix - (tx << kTileBits));
     t00 = t[0], t10 = t[1], t01 = t[kTile + 1], t11 = t[kTile + 2];
   } else {
-    const std::int64_t ix = floorIndex(x * inverseTexel_[level]), iy = floorIndex(y * inverseTexel_[level]);
     t00 = texel(ix, iy, level), t10 = texel(ix + 1, iy, level);
     t01 = texel(ix, iy + 1, level), t11 = texel(ix + 1, iy + 1, level);
   }
-  const double a = at.a, b = at.b;
+  const double a = gx - static_cast<double>(ix), b = gy - static_cast<double>(iy);
   return static_cast<float>((1.0 - b) * ((1.0 - a) * t00 + a * t10) + b * ((1.0 - a) * t01 + a * t11));
 }
 
@@ -151,9 +139,8 @@ inline float TexelTiles::sample(double x, double y, double footprint_m) const {
   int level;
   double fraction;
   levels(footprint_m, level, fraction);
-  const float fine = bilinear(lookup(x, y, level), x, y, level);
-  if (!(fraction > 0.0)) return fine;
-  return static_cast<float>((1.0 - fraction) * fine + fraction * bilinear(lookup(x, y, level + 1), x, y, level + 1));
+  const float fine = bilinear(x, y, level);
+  return fraction > 0.0 ? static_cast<float>((1.0 - fraction) * fine + fraction * bilinear(x, y, level + 1)) : fine;
 }
 
 }  // namespace lrsvo
