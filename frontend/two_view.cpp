@@ -101,27 +101,40 @@ bool isNewMotion(const std::vector<TwoViewResult>& known, const Eigen::Matrix3d&
   return true;
 }
 
+// Sets a motion as OpenCV's recoverPose gives it (rotation, translation, the
+// mask of its inliers among the correspondences), with the inliers' tracks.
+void setMotion(TwoViewResult& motion, const cv::Mat& rotation, const cv::Mat& translation, const cv::Mat& inlierMask,
+               const std::vector<int>& tracks) {
+  for (int r = 0; r < 3; ++r) {
+    motion.translation[r] = translation.at<double>(r);
+    for (int c = 0; c < 3; ++c) motion.rotation(r, c) = rotation.at<double>(r, c);
+  }
+  motion.translation.normalize();
+  for (std::size_t i = 0; i < tracks.size(); ++i)
+    if (inlierMask.at<unsigned char>(static_cast<int>(i))) motion.inlierTracks.push_back(tracks[i]);
+}
+
 TwoViewResult failed(TwoViewResult result, const std::string& why) {
   result.success = false;
   result.failure = "two-view: " + why;
   return result;
 }
 
-}  // namespace
+// The two frames' pixels by track and their correspondences, gathered once
+// for both the essential matrix and the homography.
+struct SharedTracks {
+  SharedTracks(const FrameObservations& a, const FrameObservations& b, const PinholeIntrinsics& intrinsics, int camera)
+      : pixelsA(pixelsByTrack(a, camera)),
+        pixelsB(pixelsByTrack(b, camera)),
+        shared(correspondences(pixelsA, pixelsB, intrinsics)) {}
+  std::map<int, Eigen::Vector2d> pixelsA, pixelsB;
+  Correspondences shared;
+};
 
-Eigen::Isometry3d TwoViewResult::bFromA(double distance) const {
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = rotation;
-  pose.translation() = distance * translation;
-  return pose;
-}
-
-TwoViewResult estimateTwoView(const FrameObservations& a, const FrameObservations& b,
-                              const PinholeIntrinsics& intrinsics, const TwoViewOptions& options) {
+TwoViewResult essentialMotion(const SharedTracks& frames, const PinholeIntrinsics& intrinsics,
+                              const TwoViewOptions& options) {
   TwoViewResult result;
-  const std::map<int, Eigen::Vector2d> pixelsA = pixelsByTrack(a, options.camera);
-  const std::map<int, Eigen::Vector2d> pixelsB = pixelsByTrack(b, options.camera);
-  const auto [tracks, pointsA, pointsB] = correspondences(pixelsA, pixelsB, intrinsics);
+  const auto& [tracks, pointsA, pointsB] = frames.shared;
   result.correspondences = static_cast<int>(tracks.size());
   if (result.correspondences < std::max(5, options.minInliers))
     return failed(result, std::to_string(result.correspondences) + " shared tracks, need at least " +
@@ -168,25 +181,32 @@ TwoViewResult estimateTwoView(const FrameObservations& a, const FrameObservation
                               " correspondences are inliers in front of both cameras, need " +
                               std::to_string(options.minInliers) + " (too little parallax or motion?)");
 
-  for (int r = 0; r < 3; ++r) {
-    result.translation[r] = translation.at<double>(r);
-    for (int c = 0; c < 3; ++c) result.rotation(r, c) = rotation.at<double>(r, c);
-  }
-  result.translation.normalize();
-  for (std::size_t i = 0; i < tracks.size(); ++i)
-    if (inlierMask.at<unsigned char>(static_cast<int>(i))) result.inlierTracks.push_back(tracks[i]);
-  if (options.refine) refine(result, pixelsA, pixelsB, intrinsics, options.refineSolver);
+  setMotion(result, rotation, translation, inlierMask, tracks);
+  if (options.refine) refine(result, frames.pixelsA, frames.pixelsB, intrinsics, options.refineSolver);
   result.success = true;
   return result;
 }
 
+}  // namespace
+
+Eigen::Isometry3d TwoViewResult::bFromA(double distance) const {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = rotation;
+  pose.translation() = distance * translation;
+  return pose;
+}
+
+TwoViewResult estimateTwoView(const FrameObservations& a, const FrameObservations& b,
+                              const PinholeIntrinsics& intrinsics, const TwoViewOptions& options) {
+  return essentialMotion(SharedTracks(a, b, intrinsics, options.camera), intrinsics, options);
+}
+
 std::vector<TwoViewResult> twoViewHypotheses(const FrameObservations& a, const FrameObservations& b,
                                              const PinholeIntrinsics& intrinsics, const TwoViewOptions& options) {
-  std::vector<TwoViewResult> hypotheses = {estimateTwoView(a, b, intrinsics, options)};
+  const SharedTracks frames(a, b, intrinsics, options.camera);
+  std::vector<TwoViewResult> hypotheses = {essentialMotion(frames, intrinsics, options)};
   if (!hypotheses.front().success) return hypotheses;
-  const std::map<int, Eigen::Vector2d> pixelsA = pixelsByTrack(a, options.camera);
-  const std::map<int, Eigen::Vector2d> pixelsB = pixelsByTrack(b, options.camera);
-  const Correspondences shared = correspondences(pixelsA, pixelsB, intrinsics);
+  const Correspondences& shared = frames.shared;
 
   // The ground's homography, then each of its motions whose essential matrix [t]x R, decomposed by the
   // cheirality test like the first hypothesis's, keeps nearly all of the homography's inliers in front of both
@@ -210,16 +230,10 @@ std::vector<TwoViewResult> twoViewHypotheses(const FrameObservations& a, const F
                                         rotation, translation, inFrontMask);
     if (inFront < kMinInFrontFraction * planeInliers) continue;
     TwoViewResult motion;
-    for (int r = 0; r < 3; ++r) {
-      motion.translation[r] = translation.at<double>(r);
-      for (int c = 0; c < 3; ++c) motion.rotation(r, c) = rotation.at<double>(r, c);
-    }
-    motion.translation.normalize();
+    setMotion(motion, rotation, translation, inFrontMask, shared.tracks);
     if (!isNewMotion(hypotheses, motion.rotation, motion.translation)) continue;
     motion.correspondences = hypotheses.front().correspondences;
-    for (std::size_t i = 0; i < shared.tracks.size(); ++i)
-      if (inFrontMask.at<unsigned char>(static_cast<int>(i))) motion.inlierTracks.push_back(shared.tracks[i]);
-    if (options.refine) refine(motion, pixelsA, pixelsB, intrinsics, options.refineSolver);
+    if (options.refine) refine(motion, frames.pixelsA, frames.pixelsB, intrinsics, options.refineSolver);
     if (!isNewMotion(hypotheses, motion.rotation, motion.translation)) continue;
     motion.success = true;
     hypotheses.push_back(std::move(motion));

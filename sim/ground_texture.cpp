@@ -113,11 +113,7 @@ float GroundTexture::grey(const SurfaceHit& hit, double footprint_m) const {
 }
 
 void GroundTexture::greyRow(const SurfaceHit* hits, const float* footprints_m, int count, float* out) const {
-  for (int i = 0; i < count; ++i) {
-    const SurfaceHit& hit = hits[i];
-    out[i] = hit.tree || hit.building ? grey(hit, footprints_m[i])
-                                      : groundTexels_.sample(hit.point.x(), hit.point.y(), footprints_m[i]);
-  }
+  for (int i = 0; i < count; ++i) out[i] = GroundTexture::grey(hits[i], footprints_m[i]);  // not virtual: inlined
 }
 
 void GroundTexture::prepare(const std::vector<TexelRegion>& ground, int threads) const {

@@ -25,8 +25,8 @@ class SurfaceView {
   static constexpr int kGroundGrid_px = 16;
 
   // Throws lrsvo::Error when a ray misses the ground (a camera below the
-  // surface or seeing the horizon). The ground grid is solved on up to
-  // `threads` threads.
+  // surface or seeing the horizon). The ground grid is solved in parallel
+  // when threads > 1 (sim/pool_for.h).
   SurfaceView(const Terrain& terrain, const Camera& camera, const Eigen::Isometry3d& cameraFromWorld, int threads = 1);
 
   // The surface point seen at pixel (u, v); its tree and building pointers
@@ -40,8 +40,9 @@ class SurfaceView {
   // within a cell of the ground grid the ray and the ground depth are linear
   // in u, so they advance by a constant step. Only the footprint differs
   // more: its factor for the ray's direction is interpolated between the
-  // nodes (6e-4 relative at a 417 px focal length, 16 times less at 1667
-  // px). Each obstacle is tested over the pixels of its bounding box alone.
+  // nodes (5.6e-4 relative at most at a 417 px focal length; it falls
+  // with the square of a cell's angle, so less at 1667 px). Each obstacle is tested over the pixels of its bounding box
+  // alone.
   void hitRow(int v, int first, int count, SurfaceHit* hits, float* footprints) const;
   // The ground this view sees, one region per cell of the ground grid: the
   // box of its corners' ground points, widened by a footprint, and their

@@ -69,12 +69,11 @@ void TexelTiles::require(const std::vector<TexelRegion>& regions, int threads) {
         auto found = tiles_.find(key);
         if (found == tiles_.end()) {
           found = tiles_.emplace(key, std::make_unique<Tile>()).first;
+          found->second->texels.resize((kTile + 1) * (kTile + 1));  // filled below; the grid points at its data
           missing.emplace_back(key, found->second.get());
         }
-        Tile& tile = *found->second;
-        tile.lastUsed = images_;
-        tile.texels.resize((kTile + 1) * (kTile + 1));  // filled below; sample() keeps a pointer to its data
-        slot = tile.texels.data();
+        found->second->lastUsed = images_;
+        slot = found->second->texels.data();
       }
     }
   }

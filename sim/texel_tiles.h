@@ -40,9 +40,9 @@ class TexelTiles {
   // Throws lrsvo::Error on a non-positive base texel or keepImages < 1.
   TexelTiles(Function function, double baseTexel_m, int keepImages = 8);
 
-  // Fills every tile that samples inside the regions will read, on up to
-  // `threads` threads (`function` is called from all of them); tiles no image
-  // has read for keepImages calls are dropped. Not safe while another thread
+  // Fills every tile that samples inside the regions will read, in parallel
+  // when threads > 1 (sim/pool_for.h; `function` is called from every
+  // thread); tiles no image has read for keepImages calls are dropped. Not safe while another thread
   // samples.
   void require(const std::vector<TexelRegion>& regions, int threads);
   // The texture at (x, y) for a pixel footprint. Safe on many threads at once.
