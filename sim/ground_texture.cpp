@@ -92,7 +92,9 @@ double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
 GroundTexture::GroundTexture(const GroundTextureOptions& options)
     : options_(options),
-      groundTexels_([this](double x, double y, double footprint) { return ground(x, y, footprint); }, kBaseTexel_m) {
+      groundTexels_([this](double x, double y, double footprint) { return ground(x, y, footprint); }, kBaseTexel_m),
+      crownTexels_([this](double x, double y, double footprint) { return crownDetail(x, y, footprint); },
+                   kBaseTexel_m) {
   const auto& o = options_;
   if (!(std::isfinite(o.fieldSize_m) && o.fieldSize_m > 0.0))
     throw Error("ground texture: fieldSize_m must be finite and > 0");
@@ -113,11 +115,41 @@ float GroundTexture::grey(const SurfaceHit& hit, double footprint_m) const {
 }
 
 void GroundTexture::greyRow(const SurfaceHit* hits, const float* footprints_m, int count, float* out) const {
-  for (int i = 0; i < count; ++i) out[i] = GroundTexture::grey(hits[i], footprints_m[i]);  // not virtual: inlined
+  // Ground and crown pixels are gathered and sampled from their caches together (TexelTiles::sampleMany),
+  // kBatch pixels at a time; roofs and walls one by one.
+  constexpr int kBatch = 256;
+  struct Batch {
+    double x[kBatch], y[kBatch], shade[kBatch];
+    float footprint[kBatch], value[kBatch];
+    int pixel[kBatch], size = 0;
+    void add(const SurfaceHit& hit, float footprint_m, int at, double shadeHere) {
+      x[size] = hit.point.x(), y[size] = hit.point.y(), footprint[size] = footprint_m;
+      shade[size] = shadeHere, pixel[size++] = at;
+    }
+    void sample(const TexelTiles& tiles) { tiles.sampleMany(x, y, footprint, size, value); }
+  };
+  Batch ground, crowns;
+  for (int start = 0; start < count; start += kBatch) {
+    ground.size = crowns.size = 0;
+    for (int i = start; i < std::min(count, start + kBatch); ++i) {
+      if (hits[i].tree)
+        crowns.add(hits[i], footprints_m[i], i, crownShade(hits[i]));
+      else if (hits[i].building)
+        out[i] = building(hits[i], footprints_m[i]);
+      else
+        ground.add(hits[i], footprints_m[i], i, 1.0);
+    }
+    ground.sample(groundTexels_);
+    for (int k = 0; k < ground.size; ++k) out[ground.pixel[k]] = ground.value[k];
+    crowns.sample(crownTexels_);
+    for (int k = 0; k < crowns.size; ++k)  // as tree() computes it
+      out[crowns.pixel[k]] = static_cast<float>(std::clamp(crowns.shade[k] * crowns.value[k], 0.0, 255.0));
+  }
 }
 
-void GroundTexture::prepare(const std::vector<TexelRegion>& ground, int threads) const {
-  groundTexels_.require(ground, threads);
+void GroundTexture::prepare(const SurfaceRegions& seen, int threads) const {
+  groundTexels_.require(seen.ground, threads);
+  crownTexels_.require(seen.crowns, threads);
 }
 
 double GroundTexture::grain(double x, double y, double footprint_m) const {
@@ -206,14 +238,21 @@ float GroundTexture::ground(double x, double y, double footprint_m) const {
 }
 
 float GroundTexture::tree(const SurfaceHit& hit, double footprint_m) const {
+  const double clumps = crownTexels_.sample(hit.point.x(), hit.point.y(), footprint_m);
+  return static_cast<float>(std::clamp(crownShade(hit) * clumps, 0.0, 255.0));
+}
+
+double GroundTexture::crownShade(const SurfaceHit& hit) const {
   const Terrain::Tree& t = *hit.tree;
   const double r2 = std::min(1.0, (hit.point.head<2>() - t.centre).squaredNorm() / (t.radius * t.radius));
   const double shading = 0.55 + 0.45 * std::sqrt(1.0 - r2);
-  const double x = hit.point.x(), y = hit.point.y();
-  const double clumps = 1.0 + 2.0 * fractal(x, y, 0.02, 2.56, 1.0, footprint_m, salt_ + kCrown);
   const double tone =
       lerp(45.0, 80.0, hash01(std::llround(t.centre.x() * 10.0), std::llround(t.centre.y() * 10.0), salt_ + kCrown));
-  return static_cast<float>(std::clamp(tone * shading * clumps, 0.0, 255.0));
+  return tone * shading;
+}
+
+float GroundTexture::crownDetail(double x, double y, double footprint_m) const {
+  return static_cast<float>(1.0 + 2.0 * fractal(x, y, 0.02, 2.56, 1.0, footprint_m, salt_ + kCrown));
 }
 
 float GroundTexture::building(const SurfaceHit& hit, double footprint_m) const {

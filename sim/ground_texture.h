@@ -32,10 +32,10 @@ class GroundTexture : public SurfaceTexture {
   GroundTexture(const GroundTexture&) = delete;  // its texel cache calls back into it
   GroundTexture& operator=(const GroundTexture&) = delete;
 
-  // Caches the ground's texels over the regions an image sees (sim/texel_tiles.h).
-  void prepare(const std::vector<TexelRegion>& ground, int threads) const override;
-  // Ground hits from the cache filled by prepare() (or directly, to the same
-  // value, outside it); crowns and roofs directly.
+  // Caches the texels of the ground and the crowns an image sees (sim/texel_tiles.h).
+  void prepare(const SurfaceRegions& seen, int threads) const override;
+  // Ground and crown hits from the caches filled by prepare() (or directly,
+  // to the same value, outside them); roofs and walls directly.
   float grey(const SurfaceHit& hit, double footprint_m) const override;
   void greyRow(const SurfaceHit* hits, const float* footprints_m, int count, float* out) const override;
   // The ground alone (fields, tracks, hedges) at (x, y), evaluated directly.
@@ -44,13 +44,17 @@ class GroundTexture : public SurfaceTexture {
  private:
   float field(double u, double v, std::int64_t i, std::int64_t j, int half, double footprint_m) const;
   float tree(const SurfaceHit& hit, double footprint_m) const;
+  // A crown's tone, shaded towards its rim, at a hit on it; tree() is this times crownDetail(), clamped.
+  double crownShade(const SurfaceHit& hit) const;
+  // The leafy clumps of every crown, a texture of x and y (cached in crownTexels_).
+  float crownDetail(double x, double y, double footprint_m) const;
   float building(const SurfaceHit& hit, double footprint_m) const;
   double grain(double x, double y, double footprint_m) const;
 
   GroundTextureOptions options_;
   std::uint32_t salt_;
   double cosGrid_, sinGrid_;  // the field grid's rotation
-  mutable TexelTiles groundTexels_;
+  mutable TexelTiles groundTexels_, crownTexels_;
 };
 
 }  // namespace lrsvo

@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "graph/error.h"
+#include "sim/gaussian_noise.h"
 #include "sim/pool_for.h"
 #include "sim/seed_mix.h"
 #include "sim/surface_view.h"
@@ -59,7 +60,7 @@ cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d
   const auto start = Clock::now();
   const SurfaceView view(terrain_, camera, cameraFromWorld, options_.threads);
   const auto viewed = Clock::now();
-  texture_.prepare(view.groundRegions(), options_.threads);
+  texture_.prepare(view.regions(), options_.threads);
   const auto prepared = Clock::now();
   cv::Mat scene(camera.height, camera.width, CV_32FC1);
   const int chunks = (camera.height + kRowsPerChunk - 1) / kRowsPerChunk;
@@ -85,21 +86,19 @@ cv::Mat ImageRenderer::render(const Camera& camera, const Eigen::Isometry3d& cam
   image *= gain(time_s, cameraIndex);
   if (options_.vignetting > 0.0) vignette(camera, image);
   if (options_.blurSigma_px > 0.0) cv::GaussianBlur(image, image, cv::Size(0, 0), options_.blurSigma_px);
-  // Noise and the conversion to 8 bits, a band of rows at a time: each band
-  // draws its noise from its own seed, so the image does not depend on the threads.
+  // Noise and the conversion to 8 bits, a band of rows at a time. Each pixel
+  // draws its noise by its index (sim/gaussian_noise.h): the image does not depend on the threads.
   cv::Mat out(image.size(), CV_8UC1);
+  const std::uint64_t noiseKey =
+      mixSeed(seed_ ^ kNoiseStream, static_cast<std::uint64_t>(frame), static_cast<std::uint64_t>(cameraIndex));
   const int chunks = (image.rows + kRowsPerChunk - 1) / kRowsPerChunk;
   poolFor(0, chunks, options_.threads, [&](int chunk) {
     const cv::Range rows(chunk * kRowsPerChunk, std::min(image.rows, (chunk + 1) * kRowsPerChunk));
-    cv::Mat band = image.rowRange(rows);
-    if (options_.noiseSigma_grey > 0.0) {
-      cv::Mat noise(band.size(), CV_32FC1);
-      cv::RNG rng(mixSeed(seed_ ^ kNoiseStream, static_cast<std::uint64_t>(frame),
-                          static_cast<std::uint64_t>(cameraIndex) << 32 | static_cast<std::uint64_t>(chunk)));
-      rng.fill(noise, cv::RNG::NORMAL, 0.0, options_.noiseSigma_grey);
-      band += noise;
-    }
-    band.convertTo(out.rowRange(rows), CV_8UC1);  // rounds and saturates to 0..255
+    if (options_.noiseSigma_grey > 0.0)
+      for (int v = rows.start; v < rows.end; ++v)
+        addGaussianNoise(image.ptr<float>(v), image.cols, options_.noiseSigma_grey, noiseKey,
+                         static_cast<std::uint64_t>(v) * static_cast<std::uint64_t>(image.cols));
+    image.rowRange(rows).convertTo(out.rowRange(rows), CV_8UC1);  // rounds and saturates to 0..255
   });
   times_.sensor_s += seconds(start, Clock::now());
   return out;

@@ -4,6 +4,13 @@
 
 namespace lrsvo {
 
+// splitmix64's output function: a bijective, well-mixed hash of 64 bits.
+inline std::uint64_t splitMix64Finalise(std::uint64_t x) {
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
 // A well-mixed 64-bit seed from a seed and two labels (e.g. a terrain cell's
 // indices, or a camera index and a purpose), so that each part of a
 // simulation draws from its own reproducible stream (splitmix64 finaliser).
@@ -15,11 +22,14 @@ std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t a, std::uint64_t b = 0);
 // A UniformRandomBitGenerator, for the <random> distributions.
 class SplitMix64 {
  public:
+  static constexpr std::uint64_t kGolden = 0x9e3779b97f4a7c15ULL;
   using result_type = std::uint64_t;
   explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
   static constexpr result_type min() { return 0; }
   static constexpr result_type max() { return ~result_type{0}; }
-  result_type operator()();
+  result_type operator()() { return splitMix64Finalise(state_ += kGolden); }
+  // The n-th output (n >= 1) of the generator seeded with `seed`, without running it.
+  static result_type at(std::uint64_t seed, std::uint64_t n) { return splitMix64Finalise(seed + n * kGolden); }
 
  private:
   std::uint64_t state_;

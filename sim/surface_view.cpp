@@ -191,6 +191,7 @@ void SurfaceView::listObstacles(double bottom) {
                             static_cast<int>(std::ceil(pixel(high.y(), camera_.height - 1)))};
     for (int tv = span.v0 / kTile_px; tv <= span.v1 / kTile_px; ++tv)
       for (int tu = span.u0 / kTile_px; tu <= span.u1 / kTile_px; ++tu) tile(tu, tv).push_back(span);
+    if (id >= 0) crownRegions_.push_back(regionOver(box));
   };
   for (std::size_t i = 0; i < obstacles_.trees.size(); ++i) {
     const Terrain::Tree& t = obstacles_.trees[i];
@@ -205,6 +206,22 @@ void SurfaceView::listObstacles(double bottom) {
                             Eigen::Vector3d(b.centre.x() + reach, b.centre.y() + reach, b.roof)),
         -1 - static_cast<int>(i));
   }
+}
+
+TexelRegion SurfaceView::regionOver(const Eigen::AlignedBox3d& box) const {
+  constexpr double kFootprintMargin = 0.01;
+  // footprintAlong(): range / focal / sqrt(obliquity), the obliquity at most 1
+  // and at least the box's nearest height difference over its farthest range.
+  double farthest = 0.0;
+  for (int c = 0; c < 8; ++c)
+    farthest = std::max(farthest, (box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)) - centre_).norm());
+  const double nearestHeight = std::max({0.0, box.min().z() - centre_.z(), centre_.z() - box.max().z()});
+  const double obliquity = std::max(0.25, nearestHeight / farthest);
+  TexelRegion region;
+  region.box = Eigen::AlignedBox2d(box.min().head<2>(), box.max().head<2>());
+  region.minFootprint_m = static_cast<float>(box.exteriorDistance(centre_) / meanFocal_ * (1.0 - kFootprintMargin));
+  region.maxFootprint_m = static_cast<float>(farthest / meanFocal_ / std::sqrt(obliquity) * (1.0 + kFootprintMargin));
+  return region;
 }
 
 bool SurfaceView::meets(int id, const Eigen::Vector3d& direction, double& depth, SurfaceHit& hit) const {

@@ -49,6 +49,10 @@ class SurfaceView {
   // footprints, widened by 1 % (the surface curves a little between corners).
   // It holds what the ground hits of the cell's pixels sample.
   std::vector<TexelRegion> groundRegions() const;
+  // One region per tree crown in view: the box of its crown, and the
+  // footprints any point of the crown's bounding box can have from here.
+  const std::vector<TexelRegion>& crownRegions() const { return crownRegions_; }
+  SurfaceRegions regions() const { return {groundRegions(), crownRegions_}; }
 
  private:
   static constexpr int kTile_px = 32;  // obstacles are listed per square tile of the image
@@ -63,6 +67,8 @@ class SurfaceView {
   // before `depth`; if so, makes `hit` that obstacle's hit and lowers depth to it.
   bool meets(int id, const Eigen::Vector3d& direction, double& depth, SurfaceHit& hit) const;
   void listObstacles(double bottom);
+  // The footprints a hit anywhere in `box` can have, in a region over the box.
+  TexelRegion regionOver(const Eigen::AlignedBox3d& box) const;
   // An obstacle and the pixels its bounding box may cover, inclusive.
   struct ObstacleSpan {
     int id;  // a tree as i, a building as -1 - i
@@ -82,6 +88,7 @@ class SurfaceView {
   Terrain::Obstacles obstacles_;
   int tilesU_ = 0, tilesV_ = 0;
   std::vector<std::vector<ObstacleSpan>> tiles_;  // [tile]
+  std::vector<TexelRegion> crownRegions_;
 };
 
 }  // namespace lrsvo

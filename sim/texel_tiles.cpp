@@ -25,9 +25,52 @@ TexelTiles::TexelTiles(Function function, double baseTexel_m, int keepImages)
   }
 }
 
+void TexelTiles::sampleMany(const double* x, const double* y, const float* footprints_m, int count, float* out) const {
+  int i = 0;
+  if (simd())
+    for (; i + 4 <= count; i += 4)
+      if (!sampleFourAvx2(x + i, y + i, footprints_m + i, out + i))
+        for (int k = i; k < i + 4; ++k) out[k] = sample(x[k], y[k], footprints_m[k]);
+  for (; i < count; ++i) out[i] = sample(x[i], y[i], footprints_m[i]);
+}
+
 float TexelTiles::texel(std::int64_t ix, std::int64_t iy, int level) const {
   const double s = texel_[level];
   return function_(static_cast<double>(ix) * s, static_cast<double>(iy) * s, s);
+}
+
+namespace {
+// A node's position between the next level's nodes: 0 on one, 0.5 halfway.
+double halfwayIfOdd(std::int64_t index) { return (index & 1) != 0 ? 0.5 : 0.0; }
+}  // namespace
+
+TexelTiles::TexelPair TexelTiles::texelPair(std::int64_t ix, std::int64_t iy, int level) const {
+  const std::int64_t cx = ix >> 1, cy = iy >> 1;
+  const double a = halfwayIfOdd(ix), b = halfwayIfOdd(iy);
+  const double c00 = texel(cx, cy, level + 1);
+  const double c10 = a > 0.0 ? texel(cx + 1, cy, level + 1) : 0.0;
+  const double c01 = b > 0.0 ? texel(cx, cy + 1, level + 1) : 0.0;
+  const double c11 = a > 0.0 && b > 0.0 ? texel(cx + 1, cy + 1, level + 1) : 0.0;
+  return {texel(ix, iy, level), static_cast<float>(bilinearOf(a, b, c00, c10, c01, c11))};
+}
+
+void TexelTiles::fill(Tile& tile, const Key& key) const {
+  // The next level's nodes under the tile first (half as many per side, plus the shared one), each once.
+  constexpr int kCoarse = kTile / 2 + 1;
+  std::array<float, kCoarse * kCoarse> coarse;
+  const std::int64_t cx0 = key.tx * kTile / 2, cy0 = key.ty * kTile / 2;
+  for (int v = 0; v < kCoarse; ++v)
+    for (int u = 0; u < kCoarse; ++u) coarse[v * kCoarse + u] = texel(cx0 + u, cy0 + v, key.level + 1);
+  for (int v = 0; v <= kTile; ++v) {
+    for (int u = 0; u <= kTile; ++u) {
+      const double a = halfwayIfOdd(u), b = halfwayIfOdd(v);
+      const float* c = &coarse[(v / 2) * kCoarse + u / 2];
+      const double c00 = c[0], c10 = a > 0.0 ? c[1] : 0.0, c01 = b > 0.0 ? c[kCoarse] : 0.0;
+      const double c11 = a > 0.0 && b > 0.0 ? c[kCoarse + 1] : 0.0;
+      tile.texels[v * (kTile + 1) + u] = {texel(key.tx * kTile + u, key.ty * kTile + v, key.level),
+                                          static_cast<float>(bilinearOf(a, b, c00, c10, c01, c11))};
+    }
+  }
 }
 
 std::vector<TexelTiles::TileRange> TexelTiles::tileRanges(const std::vector<TexelRegion>& regions) const {
@@ -42,8 +85,7 @@ std::vector<TexelTiles::TileRange> TexelTiles::tileRanges(const std::vector<Texe
     int lowest, highest;
     double fraction;
     levels(region.minFootprint_m, lowest, fraction);
-    levels(region.maxFootprint_m, highest, fraction);
-    if (fraction > 0.0) ++highest;  // the blend reads the next level up
+    levels(region.maxFootprint_m, highest, fraction);  // the blend's next level is in each texel's pair
     for (int level = lowest; level <= highest; ++level) {
       const TileRange range{
           texelIndex(box.min().x(), level) >> kTileBits, texelIndex(box.min().y(), level) >> kTileBits,
@@ -63,7 +105,7 @@ void TexelTiles::require(const std::vector<TexelRegion>& regions, int threads) {
     LevelGrid& grid = grids_[level];
     for (std::int64_t row = 0; row < grid.height; ++row) {
       for (std::int64_t column = 0; column < grid.width; ++column) {
-        const float*& slot = grid.texels[row * grid.width + column];
+        const TexelPair*& slot = grid.texels[row * grid.width + column];
         if (slot == nullptr) continue;
         const Key key{grid.tx0 + column, grid.ty0 + row, level};
         auto found = tiles_.find(key);
@@ -77,19 +119,14 @@ void TexelTiles::require(const std::vector<TexelRegion>& regions, int threads) {
       }
     }
   }
-  poolFor(0, static_cast<int>(missing.size()), threads, [&](int i) {
-    const auto& [key, tile] = missing[i];
-    for (int v = 0; v <= kTile; ++v)
-      for (int u = 0; u <= kTile; ++u)
-        tile->texels[v * (kTile + 1) + u] = texel(key.tx * kTile + u, key.ty * kTile + v, key.level);
-  });
+  poolFor(0, static_cast<int>(missing.size()), threads, [&](int i) { fill(*missing[i].second, missing[i].first); });
   std::erase_if(tiles_, [&](const auto& entry) { return entry.second->lastUsed <= images_ - keep_; });
 }
 
 void TexelTiles::layOut(const std::vector<TileRange>& ranges) {
   // Each level's grid spans the bounding box of its ranges; a slot a range
   // covers holds this marker until require() points it at its tile's texels.
-  static const float kWanted = 0.0f;
+  static const TexelPair kWanted{};
   std::array<TileRange, kLevels> bounds;
   std::array<bool, kLevels> used{};
   for (const TileRange& r : ranges) {

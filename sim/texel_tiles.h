@@ -24,15 +24,18 @@ struct TexelRegion {
 // A lazily filled, world-aligned mipmap of a costly 2D texture
 // f(x, y, footprint_m): level L holds f at texels spaced s_L = base * 2^L,
 // each filtered over s_L, in square tiles computed on first use and kept
-// while recent images use them. A pixel of footprint w reads the levels L
-// and L + 1 with s_L <= w < 2 s_L, bilinearly in each and blended linearly in
-// w between them (tri-linear filtering), so each texel is
-// computed once for many frames of a slowly moving camera. Values depend only
-// on the texture and the position, never on what is cached: the same input
-// gives the same image, and a texel whose tile the last require() did not
-// list is computed on the spot, to the same value. require() also lays the
-// tiles of the current image out in a small grid per level, so that sample()
-// finds its tile by indexing (no hashing, no locks) on any number of threads.
+// while recent images use them, so each texel is computed once for many
+// frames of a slowly moving camera. A pixel of footprint w reads the levels
+// L and L + 1 with s_L <= w < 2 s_L, bilinearly in each and blended linearly
+// in w between them (tri-linear filtering). Each texel of level L also holds
+// level L + 1's bilinear interpolation at its position: that function is
+// bilinear on level L's finer cells too, so one lookup in level L reads both
+// levels. Values depend only on the texture and the position, never on what
+// is cached: the same input gives the same image, and a texel whose tile the
+// last require() did not list is computed on the spot, to the same value.
+// require() also lays the tiles of the current image out in a small grid per
+// level, so that sample() finds its tile by indexing (no hashing, no locks)
+// on any number of threads.
 class TexelTiles {
  public:
   using Function = std::function<float(double x, double y, double footprint_m)>;
@@ -42,16 +45,25 @@ class TexelTiles {
 
   // Fills every tile that samples inside the regions will read, in parallel
   // when threads > 1 (sim/pool_for.h; `function` is called from every
-  // thread); tiles no image has read for keepImages calls are dropped. Not safe while another thread
-  // samples.
+  // thread); tiles no image has read for keepImages calls are dropped. Not
+  // safe while another thread samples.
   void require(const std::vector<TexelRegion>& regions, int threads);
   // The texture at (x, y) for a pixel footprint. Safe on many threads at once.
   float sample(double x, double y, double footprint_m) const;
+  // sample() at `count` points into out[0 ..], the same values bit for bit:
+  // four points at a time with AVX2 where the CPU has it (simd()).
+  void sampleMany(const double* x, const double* y, const float* footprints_m, int count, float* out) const;
+  // Whether sampleMany() runs its AVX2 path on this CPU.
+  static bool simd();
 
  private:
   static constexpr int kLevels = 32;  // up to 2^31 base texels: far coarser than any footprint
   static constexpr int kTileBits = 6;
   static constexpr int kTile = 1 << kTileBits;  // texels per side (+ one shared row and column for interpolation)
+  // f at a node of a level, and the next level's bilinear interpolation there.
+  struct TexelPair {
+    float value, coarser;
+  };
   struct Key {
     std::int64_t tx, ty;
     int level;
@@ -61,7 +73,7 @@ class TexelTiles {
     std::size_t operator()(const Key& k) const;
   };
   struct Tile {
-    std::vector<float> texels;  // (kTile + 1)^2, row-major in y
+    std::vector<TexelPair> texels;  // (kTile + 1)^2, row-major in y
     std::int64_t lastUsed = 0;
   };
   // The texels of the tiles of one level that the last require() listed,
@@ -69,7 +81,7 @@ class TexelTiles {
   struct LevelGrid {
     std::int64_t tx0 = 0, ty0 = 0;
     std::int64_t width = 0, height = 0;
-    std::vector<const float*> texels;
+    std::vector<const TexelPair*> texels;
   };
   // The tiles of one level that one region covers, inclusive.
   struct TileRange {
@@ -80,11 +92,17 @@ class TexelTiles {
   void levels(double footprint_m, int& level, double& fraction) const;
   std::int64_t texelIndex(double coordinate, int level) const;
   float texel(std::int64_t ix, std::int64_t iy, int level) const;  // f at a lattice point, uncached
+  // The pair at a lattice point, uncached; `coarser` from the next level's nodes (c00 c10 c01 c11
+  // around it: only those its position needs are read), as fill() computes it.
+  TexelPair texelPair(std::int64_t ix, std::int64_t iy, int level) const;
+  void fill(Tile& tile, const Key& key) const;  // a new tile's pairs
   std::vector<TileRange> tileRanges(const std::vector<TexelRegion>& regions) const;
   void layOut(const std::vector<TileRange>& ranges);
-  // Bilinear interpolation at (x, y) on a level: from its tile, or computed
-  // on the spot where the last require() listed none.
-  float bilinear(double x, double y, int level) const;
+  // sample() at four points with AVX2 (sim/texel_tiles_avx2.cpp), the same
+  // operations in the same order; false, having written nothing, where a
+  // point needs what only the scalar path does: the four at different levels,
+  // a tile the grids do not hold, a footprint below the base texel.
+  bool sampleFourAvx2(const double* x, const double* y, const float* footprints_m, float* out) const;
 
   Function function_;
   double base_m_;
@@ -112,7 +130,16 @@ inline std::int64_t TexelTiles::texelIndex(double coordinate, int level) const {
   return floorIndex(coordinate * inverseTexel_[level]);
 }
 
-inline float TexelTiles::bilinear(double x, double y, int level) const {
+// (1 - b) ((1 - a) t00 + a t10) + b ((1 - a) t01 + a t11): every bilinear interpolation of this class, in
+// this order of operations (sim/texel_tiles_avx2.cpp repeats it four at a time).
+inline double bilinearOf(double a, double b, double t00, double t10, double t01, double t11) {
+  return (1.0 - b) * ((1.0 - a) * t00 + a * t10) + b * ((1.0 - a) * t01 + a * t11);
+}
+
+inline float TexelTiles::sample(double x, double y, double footprint_m) const {
+  int level;
+  double fraction;
+  levels(footprint_m, level, fraction);
   const double gx = x * inverseTexel_[level], gy = y * inverseTexel_[level];
   const std::int64_t ix = floorIndex(gx), iy = floorIndex(gy);
   // Texel indices first, then tiles (>> is floor division, also below zero), so
@@ -120,27 +147,21 @@ inline float TexelTiles::bilinear(double x, double y, int level) const {
   const std::int64_t tx = ix >> kTileBits, ty = iy >> kTileBits;
   const LevelGrid& grid = grids_[level];
   const std::int64_t column = tx - grid.tx0, row = ty - grid.ty0;
-  const float* texels = column >= 0 && column < grid.width && row >= 0 && row < grid.height
-                            ? grid.texels[row * grid.width + column]
-                            : nullptr;
-  float t00, t10, t01, t11;
+  const TexelPair* texels = column >= 0 && column < grid.width && row >= 0 && row < grid.height
+                                ? grid.texels[row * grid.width + column]
+                                : nullptr;
+  TexelPair t00, t10, t01, t11;
   if (texels != nullptr) [[likely]] {
-    const float* t = texels + (iy - (ty << kTileBits)) * (kTile + 1) + (ix - (tx << kTileBits));
+    const TexelPair* t = texels + (iy - (ty << kTileBits)) * (kTile + 1) + (ix - (tx << kTileBits));
     t00 = t[0], t10 = t[1], t01 = t[kTile + 1], t11 = t[kTile + 2];
   } else {
-    t00 = texel(ix, iy, level), t10 = texel(ix + 1, iy, level);
-    t01 = texel(ix, iy + 1, level), t11 = texel(ix + 1, iy + 1, level);
+    t00 = texelPair(ix, iy, level), t10 = texelPair(ix + 1, iy, level);
+    t01 = texelPair(ix, iy + 1, level), t11 = texelPair(ix + 1, iy + 1, level);
   }
   const double a = gx - static_cast<double>(ix), b = gy - static_cast<double>(iy);
-  return static_cast<float>((1.0 - b) * ((1.0 - a) * t00 + a * t10) + b * ((1.0 - a) * t01 + a * t11));
-}
-
-inline float TexelTiles::sample(double x, double y, double footprint_m) const {
-  int level;
-  double fraction;
-  levels(footprint_m, level, fraction);
-  const float fine = bilinear(x, y, level);
-  return fraction > 0.0 ? static_cast<float>((1.0 - fraction) * fine + fraction * bilinear(x, y, level + 1)) : fine;
+  const double fine = bilinearOf(a, b, t00.value, t10.value, t01.value, t11.value);
+  const double coarse = bilinearOf(a, b, t00.coarser, t10.coarser, t01.coarser, t11.coarser);
+  return static_cast<float>((1.0 - fraction) * fine + fraction * coarse);
 }
 
 }  // namespace lrsvo

@@ -2,6 +2,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <iostream>
 #include <limits>
 #include <random>
 #include <vector>
@@ -78,6 +79,40 @@ TEST(TexelTiles, SamplesOutsideTheRequiredTilesHaveTheCachedValue) {
     tiles.require({}, 1);  // nothing listed: the same sample, computed directly
     ASSERT_EQ(tiles.sample(px, py, f), cached);
     tiles.require({{Eigen::AlignedBox2d(Eigen::Vector2d(-1.0, -1.0), Eigen::Vector2d(2.0, 1.5)), 0.01f, 0.05f}}, 2);
+  }
+}
+
+// sampleMany() gives sample()'s values bit for bit: runs of neighbouring
+// pixels (the renderer's case, mostly four at one level), runs crossing a
+// level or a tile, points outside the listed tiles, footprints finer than the
+// base texel or beyond the coarsest level, and lengths that leave a remainder.
+TEST(TexelTiles, SampleManyGivesSampleBitForBit) {
+  auto wavy = [](double x, double y, double footprint_m) {
+    return static_cast<float>(std::sin(7.0 * x) * std::cos(5.0 * y) + 10.0 * footprint_m);
+  };
+  TexelTiles tiles(wavy, kBase_m);
+  tiles.require({{Eigen::AlignedBox2d(Eigen::Vector2d(-2.0, -1.0), Eigen::Vector2d(1.0, 2.0)), 0.004f, 0.2f}}, 2);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> start(-2.5, 1.5), step(-0.03, 0.03), logFootprint(-6.0, -1.5);
+  std::vector<double> x, y;
+  std::vector<float> footprints;
+  for (int run = 0; run < 400; ++run) {  // runs of 1..40 points along a line, the footprint drifting
+    double px = start(rng), py = start(rng), f = std::exp(logFootprint(rng));
+    const double dx = step(rng), dy = step(rng), growth = 1.0 + step(rng);
+    for (int i = 0, length = 1 + run % 40; i < length; ++i, px += dx, py += dy, f *= growth)
+      x.push_back(px), y.push_back(py), footprints.push_back(static_cast<float>(f));
+  }
+  for (float extreme : {1e-9f, 5e9f, 0.0f, std::numeric_limits<float>::infinity()})
+    for (int i = 0; i < 4; ++i) x.push_back(0.1 * i), y.push_back(0.2), footprints.push_back(i == 2 ? extreme : 0.02f);
+  const int count = static_cast<int>(x.size());
+  std::vector<float> many(count);
+  tiles.sampleMany(x.data(), y.data(), footprints.data(), count, many.data());
+  std::cout << "[ info     ] " << count << " points, AVX2 path "
+            << (TexelTiles::simd() ? "on" : "off (not in this CPU)") << "\n";
+  for (int i = 0; i < count; ++i) {
+    const float one = tiles.sample(x[i], y[i], footprints[i]);
+    ASSERT_EQ(std::bit_cast<std::uint32_t>(many[i]), std::bit_cast<std::uint32_t>(one))
+        << "point " << i << " at (" << x[i] << ", " << y[i] << "), footprint " << footprints[i];
   }
 }
 

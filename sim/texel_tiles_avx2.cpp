@@ -1,0 +1,111 @@
+// TexelTiles' four-point path. Built for any x86-64 (the library is not
+// compiled for AVX2), its functions ask for AVX2 alone and run only where
+// simd() found it at run time. Without FMA the compiler cannot fuse a
+// multiply and an add, so every operation rounds as the scalar path's does.
+#include "sim/texel_tiles.h"
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define LRSVO_AVX2 __attribute__((target("avx2")))
+#endif
+
+namespace lrsvo {
+
+#ifdef LRSVO_AVX2
+
+bool TexelTiles::simd() {
+  static const bool hasAvx2 = __builtin_cpu_supports("avx2");
+  return hasAvx2;
+}
+
+namespace {
+
+// bilinearOf() for four points.
+LRSVO_AVX2 __m256d bilinearOfFour(__m256d a, __m256d b, __m128 t00, __m128 t10, __m128 t01, __m128 t11) {
+  const __m256d one = _mm256_set1_pd(1.0);
+  const __m256d oneMinusA = _mm256_sub_pd(one, a), oneMinusB = _mm256_sub_pd(one, b);
+  const __m256d top =
+      _mm256_add_pd(_mm256_mul_pd(oneMinusA, _mm256_cvtps_pd(t00)), _mm256_mul_pd(a, _mm256_cvtps_pd(t10)));
+  const __m256d bottom =
+      _mm256_add_pd(_mm256_mul_pd(oneMinusA, _mm256_cvtps_pd(t01)), _mm256_mul_pd(a, _mm256_cvtps_pd(t11)));
+  return _mm256_add_pd(_mm256_mul_pd(oneMinusB, top), _mm256_mul_pd(b, bottom));
+}
+
+}  // namespace
+
+LRSVO_AVX2 bool TexelTiles::sampleFourAvx2(const double* x, const double* y, const float* footprints_m,
+                                           float* out) const {
+  // levels() for four footprints: the level from the exponent (all four the same, from 0 to kLevels - 2,
+  // where levels() needs none of its special cases), the blend fraction from the mantissa.
+  const __m256d scaled = _mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(footprints_m)), _mm256_set1_pd(inverseTexel_[0]));
+  const __m256i bits = _mm256_castpd_si256(scaled);
+  const __m256i biasedExponent = _mm256_srli_epi64(bits, 52);  // with the sign bit above it
+  const long long firstExponent = _mm256_extract_epi64(biasedExponent, 0);
+  if (firstExponent < 1023 || firstExponent > 1023 + kLevels - 2) return false;
+  const __m256i sameLevel = _mm256_cmpeq_epi64(biasedExponent, _mm256_set1_epi64x(firstExponent));
+  if (_mm256_movemask_pd(_mm256_castsi256_pd(sameLevel)) != 0xF) return false;
+  const int level = static_cast<int>(firstExponent - 1023);
+  const __m256d mantissa = _mm256_castsi256_pd(_mm256_or_si256(
+      _mm256_and_si256(bits, _mm256_set1_epi64x(0x000fffffffffffffLL)), _mm256_set1_epi64x(1022LL << 52)));
+  const __m256d one = _mm256_set1_pd(1.0);
+  const __m256d fraction = _mm256_sub_pd(_mm256_mul_pd(_mm256_set1_pd(2.0), mantissa), one);
+
+  const LevelGrid& grid = grids_[level];
+  constexpr std::int64_t kInt32Safe = std::int64_t{1} << 30;
+  if (grid.width == 0 || std::abs(grid.tx0) > kInt32Safe || std::abs(grid.ty0) > kInt32Safe) return false;
+  const __m256d inverse = _mm256_set1_pd(inverseTexel_[level]);
+  const __m256d gx = _mm256_mul_pd(_mm256_loadu_pd(x), inverse), gy = _mm256_mul_pd(_mm256_loadu_pd(y), inverse);
+  const __m256d fx = _mm256_floor_pd(gx), fy = _mm256_floor_pd(gy);
+  // Texel indices as 32-bit integers, exact within +-2^30 texels (10^4 km at 1 cm); NaN fails the test too.
+  const __m256d high = _mm256_set1_pd(0x1.0p30), low = _mm256_set1_pd(-0x1.0p30);
+  const __m256d inRange =
+      _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(fx, high, _CMP_LT_OQ), _mm256_cmp_pd(fx, low, _CMP_GT_OQ)),
+                    _mm256_and_pd(_mm256_cmp_pd(fy, high, _CMP_LT_OQ), _mm256_cmp_pd(fy, low, _CMP_GT_OQ)));
+  if (_mm256_movemask_pd(inRange) != 0xF) return false;
+  const __m128i ix = _mm256_cvttpd_epi32(fx), iy = _mm256_cvttpd_epi32(fy);
+  const __m128i tx = _mm_srai_epi32(ix, kTileBits), ty = _mm_srai_epi32(iy, kTileBits);
+  const __m128i column = _mm_sub_epi32(tx, _mm_set1_epi32(static_cast<int>(grid.tx0)));
+  const __m128i row = _mm_sub_epi32(ty, _mm_set1_epi32(static_cast<int>(grid.ty0)));
+  const __m128i minusOne = _mm_set1_epi32(-1);
+  const __m128i inGrid =
+      _mm_and_si128(_mm_and_si128(_mm_cmpgt_epi32(column, minusOne),
+                                  _mm_cmplt_epi32(column, _mm_set1_epi32(static_cast<int>(grid.width)))),
+                    _mm_and_si128(_mm_cmpgt_epi32(row, minusOne),
+                                  _mm_cmplt_epi32(row, _mm_set1_epi32(static_cast<int>(grid.height)))));
+  if (_mm_movemask_ps(_mm_castsi128_ps(inGrid)) != 0xF) return false;
+  // The loads themselves are scalar: on AMD's cores a gather costs more than its loads.
+  alignas(16) int slot[4], offset[4];
+  _mm_store_si128(reinterpret_cast<__m128i*>(slot),
+                  _mm_add_epi32(_mm_mullo_epi32(row, _mm_set1_epi32(static_cast<int>(grid.width))), column));
+  const __m128i u = _mm_sub_epi32(ix, _mm_slli_epi32(tx, kTileBits)),
+                v = _mm_sub_epi32(iy, _mm_slli_epi32(ty, kTileBits));
+  _mm_store_si128(reinterpret_cast<__m128i*>(offset), _mm_add_epi32(_mm_mullo_epi32(v, _mm_set1_epi32(kTile + 1)), u));
+  // Per point, its row of pairs (t00 and t10 side by side) and the row below: [value, coarser] x 2 each.
+  static_assert(sizeof(TexelPair) == 2 * sizeof(float), "two pairs are loaded as four floats");
+  __m128 upper[4], lower[4];
+  for (int i = 0; i < 4; ++i) {
+    const TexelPair* tile = grid.texels[slot[i]];
+    if (tile == nullptr) return false;
+    const TexelPair* t = tile + offset[i];
+    upper[i] = _mm_loadu_ps(&t->value);
+    lower[i] = _mm_loadu_ps(&t[kTile + 1].value);
+  }
+  _MM_TRANSPOSE4_PS(upper[0], upper[1], upper[2], upper[3]);  // t00 values, t00 coarser, t10 values, t10 coarser
+  _MM_TRANSPOSE4_PS(lower[0], lower[1], lower[2], lower[3]);  // the same for t01, t11
+  const __m256d a = _mm256_sub_pd(gx, fx), b = _mm256_sub_pd(gy, fy);
+  const __m256d fine = bilinearOfFour(a, b, upper[0], upper[2], lower[0], lower[2]);
+  const __m256d coarse = bilinearOfFour(a, b, upper[1], upper[3], lower[1], lower[3]);
+  const __m256d blended =
+      _mm256_add_pd(_mm256_mul_pd(_mm256_sub_pd(one, fraction), fine), _mm256_mul_pd(fraction, coarse));
+  _mm_storeu_ps(out, _mm256_cvtpd_ps(blended));
+  return true;
+}
+
+#else
+
+bool TexelTiles::simd() { return false; }
+bool TexelTiles::sampleFourAvx2(const double*, const double*, const float*, float*) const { return false; }
+
+#endif
+
+}  // namespace lrsvo
