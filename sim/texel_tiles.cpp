@@ -55,12 +55,19 @@ TexelTiles::TexelPair TexelTiles::texelPair(std::int64_t ix, std::int64_t iy, in
 }
 
 void TexelTiles::fill(Tile& tile, const Key& key) const {
-  // The next level's nodes under the tile first (half as many per side, plus the shared one), each once.
+  // The next level's nodes under the tile first (half as many per side, plus the shared one): from that
+  // level's tile where the cache holds it (a quarter of it), else computed, to the same values.
   constexpr int kCoarse = kTile / 2 + 1;
   std::array<float, kCoarse * kCoarse> coarse;
   const std::int64_t cx0 = key.tx * kTile / 2, cy0 = key.ty * kTile / 2;
+  const auto coarser = tiles_.find(Key{key.tx >> 1, key.ty >> 1, key.level + 1});
+  const TexelPair* quarter =
+      coarser == tiles_.end()
+          ? nullptr
+          : coarser->second->texels.data() + (key.ty & 1) * (kTile / 2) * (kTile + 1) + (key.tx & 1) * (kTile / 2);
   for (int v = 0; v < kCoarse; ++v)
-    for (int u = 0; u < kCoarse; ++u) coarse[v * kCoarse + u] = texel(cx0 + u, cy0 + v, key.level + 1);
+    for (int u = 0; u < kCoarse; ++u)
+      coarse[v * kCoarse + u] = quarter ? quarter[v * (kTile + 1) + u].value : texel(cx0 + u, cy0 + v, key.level + 1);
   for (int v = 0; v <= kTile; ++v) {
     for (int u = 0; u <= kTile; ++u) {
       const double a = halfwayIfOdd(u), b = halfwayIfOdd(v);
@@ -119,7 +126,16 @@ void TexelTiles::require(const std::vector<TexelRegion>& regions, int threads) {
       }
     }
   }
-  poolFor(0, static_cast<int>(missing.size()), threads, [&](int i) { fill(*missing[i].second, missing[i].first); });
+  // Coarse levels first: a tile then reads its next level's nodes from that level's tile, already filled.
+  std::stable_sort(missing.begin(), missing.end(),
+                   [](const auto& a, const auto& b) { return a.first.level > b.first.level; });
+  for (std::size_t begin = 0; begin < missing.size();) {
+    std::size_t end = begin;
+    while (end < missing.size() && missing[end].first.level == missing[begin].first.level) ++end;
+    poolFor(static_cast<int>(begin), static_cast<int>(end), threads,
+            [&](int i) { fill(*missing[i].second, missing[i].first); });
+    begin = end;
+  }
   std::erase_if(tiles_, [&](const auto& entry) { return entry.second->lastUsed <= images_ - keep_; });
 }
 

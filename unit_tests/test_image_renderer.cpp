@@ -244,6 +244,33 @@ TEST(SurfaceViewRows, GroundRegionsHoldEveryGroundHit) {
   EXPECT_EQ(outside, 0);
 }
 
+// Every crown hit of a view, in a crowded wood seen obliquely, lies inside
+// the region of its crown, with its footprint inside that region's range.
+TEST(SurfaceViewRows, CrownRegionsHoldEveryCrownHit) {
+  const Terrain terrain(crowdedTerrain());
+  const Camera camera = smallCamera();
+  const SurfaceView view(terrain, camera, obliqueCameraFromWorld());
+  const std::vector<TexelRegion>& regions = view.crownRegions();
+  ASSERT_FALSE(regions.empty());
+  std::vector<SurfaceHit> hits(camera.width);
+  std::vector<float> footprints(camera.width);
+  int crownHits = 0, outside = 0;
+  for (int v = 0; v < camera.height; ++v) {
+    view.hitRow(v, 0, camera.width, hits.data(), footprints.data());
+    for (int u = 0; u < camera.width; ++u) {
+      if (hits[u].tree == nullptr) continue;
+      ++crownHits;
+      const bool held = std::any_of(regions.begin(), regions.end(), [&](const TexelRegion& r) {
+        return r.box.contains(hits[u].point.head<2>()) && footprints[u] >= r.minFootprint_m &&
+               footprints[u] <= r.maxFootprint_m;
+      });
+      outside += !held;
+    }
+  }
+  EXPECT_GT(crownHits, camera.width * camera.height / 20);  // the wood fills a good part of the view
+  EXPECT_EQ(outside, 0);
+}
+
 // Rows are shaded and noised in parallel bands: the image does not depend on the number of threads.
 TEST(ImageRenderer, ImageDoesNotDependOnTheThreads) {
   const Terrain terrain(crowdedTerrain());
