@@ -131,7 +131,8 @@ inline std::int64_t TexelTiles::texelIndex(double coordinate, int level) const {
 }
 
 // (1 - b) ((1 - a) t00 + a t10) + b ((1 - a) t01 + a t11): every bilinear interpolation of this class, in
-// this order of operations (sim/texel_tiles_avx2.cpp repeats it four at a time).
+// this order of operations (sim/texel_tiles_avx2.cpp repeats it four at a time; code that includes this
+// header and compares the two compiles with -ffp-contract=off, as sim/CMakeLists.txt explains).
 inline double bilinearOf(double a, double b, double t00, double t10, double t01, double t11) {
   return (1.0 - b) * ((1.0 - a) * t00 + a * t10) + b * ((1.0 - a) * t01 + a * t11);
 }
