@@ -119,31 +119,32 @@ void GroundTexture::greyRow(const SurfaceHit* hits, const float* footprints_m, i
   // kBatch pixels at a time; roofs and walls one by one.
   constexpr int kBatch = 256;
   struct Batch {
-    double x[kBatch], y[kBatch], shade[kBatch];
+    double x[kBatch], y[kBatch];
     float footprint[kBatch], value[kBatch];
     int pixel[kBatch], size = 0;
-    void add(const SurfaceHit& hit, float footprint_m, int at, double shadeHere) {
-      x[size] = hit.point.x(), y[size] = hit.point.y(), footprint[size] = footprint_m;
-      shade[size] = shadeHere, pixel[size++] = at;
+    void add(const SurfaceHit& hit, float footprint_m, int at) {
+      x[size] = hit.point.x(), y[size] = hit.point.y(), footprint[size] = footprint_m, pixel[size++] = at;
     }
     void sample(const TexelTiles& tiles) { tiles.sampleMany(x, y, footprint, size, value); }
   };
   Batch ground, crowns;
+  double shade[kBatch];  // per crown pixel
   for (int start = 0; start < count; start += kBatch) {
     ground.size = crowns.size = 0;
     for (int i = start; i < std::min(count, start + kBatch); ++i) {
-      if (hits[i].tree)
-        crowns.add(hits[i], footprints_m[i], i, crownShade(hits[i]));
-      else if (hits[i].building)
+      if (hits[i].tree) {
+        shade[crowns.size] = crownShade(hits[i]);
+        crowns.add(hits[i], footprints_m[i], i);
+      } else if (hits[i].building) {
         out[i] = building(hits[i], footprints_m[i]);
-      else
-        ground.add(hits[i], footprints_m[i], i, 1.0);
+      } else {
+        ground.add(hits[i], footprints_m[i], i);
+      }
     }
     ground.sample(groundTexels_);
     for (int k = 0; k < ground.size; ++k) out[ground.pixel[k]] = ground.value[k];
     crowns.sample(crownTexels_);
-    for (int k = 0; k < crowns.size; ++k)  // as tree() computes it
-      out[crowns.pixel[k]] = static_cast<float>(std::clamp(crowns.shade[k] * crowns.value[k], 0.0, 255.0));
+    for (int k = 0; k < crowns.size; ++k) out[crowns.pixel[k]] = crownGrey(shade[k], crowns.value[k]);
   }
 }
 
@@ -238,8 +239,11 @@ float GroundTexture::ground(double x, double y, double footprint_m) const {
 }
 
 float GroundTexture::tree(const SurfaceHit& hit, double footprint_m) const {
-  const double clumps = crownTexels_.sample(hit.point.x(), hit.point.y(), footprint_m);
-  return static_cast<float>(std::clamp(crownShade(hit) * clumps, 0.0, 255.0));
+  return crownGrey(crownShade(hit), crownTexels_.sample(hit.point.x(), hit.point.y(), footprint_m));
+}
+
+float GroundTexture::crownGrey(double shade, float detail) {
+  return static_cast<float>(std::clamp(shade * detail, 0.0, 255.0));
 }
 
 double GroundTexture::crownShade(const SurfaceHit& hit) const {

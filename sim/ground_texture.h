@@ -46,6 +46,8 @@ class GroundTexture : public SurfaceTexture {
   float tree(const SurfaceHit& hit, double footprint_m) const;
   // A crown's tone, shaded towards its rim, at a hit on it; tree() is this times crownDetail(), clamped.
   double crownShade(const SurfaceHit& hit) const;
+  // A crown's grey from its shade and its detail (the one formula of tree() and greyRow()).
+  static float crownGrey(double shade, float detail);
   // The leafy clumps of every crown, a texture of x and y (cached in crownTexels_).
   float crownDetail(double x, double y, double footprint_m) const;
   float building(const SurfaceHit& hit, double footprint_m) const;

@@ -40,18 +40,25 @@ float TexelTiles::texel(std::int64_t ix, std::int64_t iy, int level) const {
 }
 
 namespace {
-// A node's position between the next level's nodes: 0 on one, 0.5 halfway.
-double halfwayIfOdd(std::int64_t index) { return (index & 1) != 0 ? 0.5 : 0.0; }
+
+// The next level's bilinear interpolation at node (ix, iy) of a level: from
+// the next level's nodes at and after (ix / 2, iy / 2), node(du, dv) for du, dv
+// in {0, 1}; a node its position does not need (an even index lies on a
+// coarse node) is not read.
+template <typename Node>
+float coarserAt(std::int64_t ix, std::int64_t iy, const Node& node) {
+  const bool oddX = (ix & 1) != 0, oddY = (iy & 1) != 0;
+  const double a = oddX ? 0.5 : 0.0, b = oddY ? 0.5 : 0.0;
+  const double c10 = oddX ? node(1, 0) : 0.0, c01 = oddY ? node(0, 1) : 0.0;
+  const double c11 = oddX && oddY ? node(1, 1) : 0.0;
+  return static_cast<float>(bilinearOf(a, b, node(0, 0), c10, c01, c11));
+}
+
 }  // namespace
 
 TexelTiles::TexelPair TexelTiles::texelPair(std::int64_t ix, std::int64_t iy, int level) const {
   const std::int64_t cx = ix >> 1, cy = iy >> 1;
-  const double a = halfwayIfOdd(ix), b = halfwayIfOdd(iy);
-  const double c00 = texel(cx, cy, level + 1);
-  const double c10 = a > 0.0 ? texel(cx + 1, cy, level + 1) : 0.0;
-  const double c01 = b > 0.0 ? texel(cx, cy + 1, level + 1) : 0.0;
-  const double c11 = a > 0.0 && b > 0.0 ? texel(cx + 1, cy + 1, level + 1) : 0.0;
-  return {texel(ix, iy, level), static_cast<float>(bilinearOf(a, b, c00, c10, c01, c11))};
+  return {texel(ix, iy, level), coarserAt(ix, iy, [&](int du, int dv) { return texel(cx + du, cy + dv, level + 1); })};
 }
 
 void TexelTiles::fill(Tile& tile, const Key& key) const {
@@ -70,12 +77,9 @@ void TexelTiles::fill(Tile& tile, const Key& key) const {
       coarse[v * kCoarse + u] = quarter ? quarter[v * (kTile + 1) + u].value : texel(cx0 + u, cy0 + v, key.level + 1);
   for (int v = 0; v <= kTile; ++v) {
     for (int u = 0; u <= kTile; ++u) {
-      const double a = halfwayIfOdd(u), b = halfwayIfOdd(v);
       const float* c = &coarse[(v / 2) * kCoarse + u / 2];
-      const double c00 = c[0], c10 = a > 0.0 ? c[1] : 0.0, c01 = b > 0.0 ? c[kCoarse] : 0.0;
-      const double c11 = a > 0.0 && b > 0.0 ? c[kCoarse + 1] : 0.0;
       tile.texels[v * (kTile + 1) + u] = {texel(key.tx * kTile + u, key.ty * kTile + v, key.level),
-                                          static_cast<float>(bilinearOf(a, b, c00, c10, c01, c11))};
+                                          coarserAt(u, v, [&](int du, int dv) { return c[dv * kCoarse + du]; })};
     }
   }
 }
