@@ -56,6 +56,12 @@ void OdometrySettings::addOptions(CLI::App& command) {
                   "flight at 30-120 m; a room-scale data set such as EuRoC needs ~0.5)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  command
+      .add_option("--outlier-sigmas", outlierSigmas,
+                  "After each window adjustment, observations farther than this many times the window's own noise "
+                  "(from its median reprojection error; within 0.5-4 px) are removed (0: a fixed 4 px)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   command.add_option("--solver", solver, "Solver of the window adjustment (lrsvo solvers lists them)")
       ->capture_default_str();
   command.add_option("--seed", seed, "Seed of every random draw (RANSAC, MLESAC)")->capture_default_str();
@@ -70,6 +76,7 @@ RunOptions OdometrySettings::runOptions() const {
   odometry.extrinsicRateSigma = extrinsicRate;
   odometry.solver = solver;
   odometry.seed = seed;
+  odometry.outliers.sigmas = outlierSigmas;
   if (rigid)
     odometry.extrinsicMode = ExtrinsicMode::kRigid;
   else if (constraint == "none")

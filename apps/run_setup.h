@@ -25,6 +25,7 @@ struct OdometrySettings {
   std::string detector = "gftt";
   int features = 300;
   double band_px = 8.0;
+  double outlierSigmas = 4.0;
   double minDepth_m = 20.0;
   std::string solver = "lm_schur_dense";
   std::uint64_t seed = 1;

@@ -35,8 +35,9 @@ RunWriter::RunWriter(const std::filesystem::path& outDir, const Rig& rig, Ground
                  "true_pitch_rad,true_yaw_rad\n";
   frames_ = openOutput(outDir / "frames.csv");
   frames_ << "frame,time_s,tracked,keyframe,segment,features,tracked_features,new_features,stereo_matches,"
-             "mapped_matches,pose_inliers,map_points,window_frames,window_rms_px,bundle_iterations,detect_ms,"
-             "track_ms,stereo_ms,undistort_ms,initialize_ms,pose_ms,triangulate_ms,bundle_ms\n";
+             "mapped_matches,pose_inliers,map_points,window_frames,window_rms_px,outlier_threshold_px,"
+             "bundle_iterations,detect_ms,track_ms,stereo_ms,undistort_ms,initialize_ms,pose_ms,triangulate_ms,"
+             "bundle_ms\n";
 
   nlohmann::json rigJson;
   for (int k = 1; k <= rig.secondaryCount(); ++k)
@@ -51,9 +52,9 @@ void RunWriter::write(const FrameEstimate& e, const FrontEndTimings& f) {
   frames_ << frame << ',' << e.time_s << ',' << e.tracked << ',' << e.keyframe << ',' << e.segment << ','
           << e.observations << ',' << f.tracked << ',' << f.added << ',' << f.stereoMatched << ',' << e.mappedMatches
           << ',' << e.poseInliers << ',' << e.mapPoints << ',' << e.windowFrames << ',' << e.windowRmsError_px << ','
-          << e.bundleIterations << ',' << f.detect_ms << ',' << f.track_ms << ',' << f.stereo_ms << ','
-          << f.undistort_ms << ',' << e.times.initialize_ms << ',' << e.times.pose_ms << ',' << e.times.triangulate_ms
-          << ',' << e.times.bundle_ms << '\n';
+          << e.outlierThreshold_px << ',' << e.bundleIterations << ',' << f.detect_ms << ',' << f.track_ms << ','
+          << f.stereo_ms << ',' << f.undistort_ms << ',' << e.times.initialize_ms << ',' << e.times.pose_ms << ','
+          << e.times.triangulate_ms << ',' << e.times.bundle_ms << '\n';
   if (!e.tracked) return;
   const Eigen::Isometry3d worldFromCamera = e.cameraFromWorld.inverse();
   const Eigen::Quaterniond q(worldFromCamera.rotation());

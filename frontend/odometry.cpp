@@ -163,8 +163,8 @@ bool Odometry::estimateFramePose(const FrameObservations& frame, int index, Eige
   const PinholeIntrinsics& intrinsics = rig_.cameras[0].intrinsics;
   for (std::size_t i = 0; i < matches.size(); ++i) {
     const Eigen::Vector3d inCamera = cameraFromWorld * matches[i].point;
-    const bool outlier =
-        inCamera.z() <= 0.0 || (intrinsics.project(inCamera) - matches[i].pixel).norm() > options_.outlierThreshold_px;
+    const bool outlier = inCamera.z() <= 0.0 ||
+                         (intrinsics.project(inCamera) - matches[i].pixel).norm() > options_.outliers.maxThreshold_px;
     if (outlier) rejected.push_back(tracks[i]);
   }
   window_.removeTracks(rejected);
@@ -198,6 +198,7 @@ FrameEstimate Odometry::track(const FrameObservations& frame, int index, const S
     window_.retire();
     estimate.times.bundle_ms = millisecondsSince(start);
     estimate.windowRmsError_px = adjustment.rmsError_px;
+    estimate.outlierThreshold_px = adjustment.outlierThreshold_px;
     estimate.bundleIterations = adjustment.summary.iterationCount();
     rejectedTracks_.insert(rejectedTracks_.end(), adjustment.rejectedTracks.begin(), adjustment.rejectedTracks.end());
     pose = window_.keyframes().back().cameraFromWorld;

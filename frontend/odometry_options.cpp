@@ -37,7 +37,7 @@ void OdometryOptions::validate() const {
           "extrinsicRateSigma must be finite and not negative");
   require(initializer.frames <= windowSize, "the initialiser's frames must fit the window");
   require(maxIterations >= 1, "maxIterations must be positive");
-  require(outlierThreshold_px > 0.0, "outlierThreshold_px must be positive");
+  lrsvo::validate(outliers);
   require(minTriangulationViews >= 2, "minTriangulationViews must be at least 2");
   require(minPoseInliers >= 4, "minPoseInliers must be at least 4");
   require(initializationStep >= 1, "initializationStep must be at least 1");

@@ -7,6 +7,7 @@
 #include "frontend/bundle_graph.h"
 #include "frontend/keyframe_policy.h"
 #include "frontend/long_range_initializer.h"
+#include "frontend/outlier_threshold.h"
 #include "frontend/pose_estimator.h"
 #include "frontend/triangulation.h"
 
@@ -63,9 +64,12 @@ struct OdometryOptions {
   double functionTolerance = 1e-5;  // stop when the cost changes by less than this fraction
   int threads = 1;                  // of the solver's linearisation and Schur complement
   BundleGraphOptions bundle;
-  // An observation whose reprojection error after the window adjustment
-  // exceeds this is removed, and a track with a base-camera outlier is dropped.
-  double outlierThreshold_px = 4.0;
+  // After each window adjustment, an observation whose reprojection error
+  // exceeds the window's threshold (outlier_threshold.h: 4 sigma of the
+  // window's own noise, within 0.5-4 px) is removed, and a track with a
+  // base-camera outlier is dropped. A frame's pose drops the tracks farther
+  // than outliers.maxThreshold_px from it.
+  OutlierTestOptions outliers;
 
   KeyframePolicyOptions keyframes;
 

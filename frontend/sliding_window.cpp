@@ -178,16 +178,42 @@ WindowAdjustment SlidingWindow::adjust() {
   }
 
   // Outliers: a base-camera outlier condemns the track (a wrong temporal
-  // match); a secondary one only that observation (a wrong stereo match).
+  // match, or a corner that is no fixed point, such as a crown's outline
+  // against the ground behind it); a secondary one only that observation (a
+  // wrong stereo match). Each camera's threshold follows its own errors'
+  // noise (a secondary camera's include how well S follows the rig): at a
+  // fixed 4 px, tracks sliding by a pixel or two over the window stayed and
+  // bent its poses.
+  const std::vector<ProjectionError> errors = bundle.projectionErrors();
+  std::vector<std::vector<double>> errorsByCamera(rig_.cameras.size());
+  std::set<int> baseTracks;
+  for (const ProjectionError& error : errors) {
+    errorsByCamera[static_cast<std::size_t>(error.observation.camera)].push_back(error.error_px);
+    if (error.observation.camera == 0) baseTracks.insert(error.observation.track);
+  }
+  std::vector<double> thresholds_px;
+  for (const std::vector<double>& cameraErrors : errorsByCamera)
+    thresholds_px.push_back(outlierThreshold_px(cameraErrors, options_.outliers));
   std::set<int> rejected;
   std::set<std::pair<int, int>> badSecondary;  // (keyframe, track)
-  for (const ProjectionError& error : bundle.projectionErrors()) {
-    if (error.error_px <= options_.outlierThreshold_px) continue;
-    if (error.observation.camera == 0)
-      rejected.insert(error.observation.track);
-    else
-      badSecondary.insert({error.frame, error.observation.track});
+  auto findOutliers = [&] {
+    rejected.clear();
+    badSecondary.clear();
+    for (const ProjectionError& error : errors) {
+      if (error.error_px <= thresholds_px[static_cast<std::size_t>(error.observation.camera)]) continue;
+      if (error.observation.camera == 0)
+        rejected.insert(error.observation.track);
+      else
+        badSecondary.insert({error.frame, error.observation.track});
+    }
+  };
+  findOutliers();
+  if (!adjustment.summary.converged() &&
+      static_cast<double>(rejected.size()) > options_.outliers.maxRejectedTrackFraction * baseTracks.size()) {
+    thresholds_px.assign(thresholds_px.size(), options_.outliers.maxThreshold_px);
+    findOutliers();
   }
+  adjustment.outlierThreshold_px = thresholds_px[0];
   for (std::size_t i = 0; i < keyframes_.size(); ++i) {
     auto& observations = keyframes_[i].observations.observations;
     const auto before = observations.size();
