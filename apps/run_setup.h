@@ -10,6 +10,7 @@
 #include "eval/odometry_run.h"
 #include "frontend/frame_source.h"
 #include "frontend/observations.h"
+#include "frontend/outlier_threshold.h"
 
 namespace lrsvo::cli {
 
@@ -25,7 +26,7 @@ struct OdometrySettings {
   std::string detector = "gftt";
   int features = 300;
   double band_px = 8.0;
-  double outlierSigmas = 4.0;
+  double outlierSigmas = OutlierTestOptions{}.sigmas;
   double minDepth_m = 20.0;
   std::string solver = "lm_schur_dense";
   std::uint64_t seed = 1;
