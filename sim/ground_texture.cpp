@@ -1,6 +1,7 @@
 #include "sim/ground_texture.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -10,6 +11,39 @@
 #include "sim/seed_mix.h"
 
 namespace lrsvo {
+
+// The corner hashes of one lattice cell of one noise layer, as valueNoise() last used them.
+struct LatticeCell {
+  bool filled = false;
+  std::uint32_t salt = 0;
+  std::int64_t ix = 0, iy = 0;
+  double a = 0.0, b = 0.0, c = 0.0, d = 0.0;
+};
+
+// The hashes that lay out one cell of the field grid: its split line, its two fields and the four edges
+// around it. Every texel of the cell reads the same ones.
+struct FieldCellLayout {
+  bool filled = false;
+  std::int64_t i = 0, j = 0;
+  double splitAcrossU = 0.0, splitAt = 0.0, splitHedge = 0.0;
+  std::array<std::array<double, 4>, 2> fields{};     // per half: kind, shade, row direction, row spacing
+  std::array<std::array<double, 2>, 2> edgeKinds{};  // per axis (u, v): the edge at the cell's start, at its end
+  std::array<std::array<double, 2>, 2> trackTones{};
+};
+
+// What the ground texture reuses from one texel to the next on this thread. A texture is evaluated along rows
+// of texels a fraction of a lattice cell apart, so most noise octaves stay in one cell for many texels: their
+// four corner hashes (six mixes) are looked up, not recomputed; and a field cell (120 m) holds many tiles.
+// A pure memo: values do not depend on it.
+struct TextureMemo {
+  static constexpr int kOctaveBits = 3, kLayerBits = 5;  // slots for 32 layers of 8 octaves
+  std::array<LatticeCell, 1 << (kOctaveBits + kLayerBits)> cells;
+  FieldCellLayout fieldCell;
+  LatticeCell& cell(std::uint32_t salt, std::uint32_t octave) {
+    return cells[((salt << kOctaveBits) + octave) & (cells.size() - 1)];
+  }
+};
+
 namespace {
 
 // Salts of the independent noise layers.
@@ -37,14 +71,29 @@ double pointHash01(std::int64_t x, std::uint64_t row) {
 }
 double hash01(std::int64_t x, std::int64_t y, std::uint32_t salt) { return pointHash01(x, rowHash(y, salt)); }
 
-// Smooth value noise of unit wavelength in [-0.5, 0.5).
-double valueNoise(double x, double y, std::uint32_t salt) {
+// Constant-initialised: reaching it costs no construction guard.
+TextureMemo& threadTextureMemo() {
+  thread_local TextureMemo memo;
+  return memo;
+}
+
+// Smooth value noise of unit wavelength in [-0.5, 0.5), its cell's corners kept in `cell`.
+double valueNoise(double x, double y, std::uint32_t salt, LatticeCell& cell) {
   const std::int64_t ix = floorIndex(x), iy = floorIndex(y);
+  if (!cell.filled || cell.ix != ix || cell.iy != iy || cell.salt != salt) {
+    const std::uint64_t row0 = rowHash(iy, salt), row1 = rowHash(iy + 1, salt);
+    cell = {true,
+            salt,
+            ix,
+            iy,
+            pointHash01(ix, row0),
+            pointHash01(ix + 1, row0),
+            pointHash01(ix, row1),
+            pointHash01(ix + 1, row1)};
+  }
   const double tx = x - static_cast<double>(ix), ty = y - static_cast<double>(iy);
   const double sx = tx * tx * (3.0 - 2.0 * tx), sy = ty * ty * (3.0 - 2.0 * ty);
-  const std::uint64_t row0 = rowHash(iy, salt), row1 = rowHash(iy + 1, salt);
-  const double a = pointHash01(ix, row0), b = pointHash01(ix + 1, row0);
-  const double c = pointHash01(ix, row1), d = pointHash01(ix + 1, row1);
+  const double a = cell.a, b = cell.b, c = cell.c, d = cell.d;
   return a + (b - a) * sx + (c - a) * sy + (a - b - c + d) * sx * sy - 0.5;
 }
 
@@ -58,7 +107,7 @@ double keep(double lambda, double footprint) { return std::clamp(lambda / (2.0 *
 // footprint faded out; scaled so that its spread is that of one octave
 // (about +-0.5) however many octaves it sums.
 double fractal(double x, double y, double lambdaMin, double lambdaMax, double roughness, double footprint,
-               std::uint32_t salt) {
+               std::uint32_t salt, TextureMemo& memo) {
   double sum = 0.0, amplitude = 1.0, total = 0.0;
   std::uint32_t octave = 0;
   // Wavelengths halve exactly, so their inverses double exactly: no division per octave.
@@ -69,7 +118,8 @@ double fractal(double x, double y, double lambdaMin, double lambdaMax, double ro
     total += amplitude * amplitude;
     const double weight = std::clamp(lambda * halfInverseFootprint - 1.0, 0.0, 1.0);  // keep(lambda, footprint)
     if (weight > 0.0)
-      sum += weight * amplitude * valueNoise(x * inverseLambda, y * inverseLambda, salt * 131u + octave);
+      sum += weight * amplitude *
+             valueNoise(x * inverseLambda, y * inverseLambda, salt * 131u + octave, memo.cell(salt, octave));
   }
   return sum / std::sqrt(total);
 }
@@ -114,38 +164,34 @@ float GroundTexture::grey(const SurfaceHit& hit, double footprint_m) const {
   return groundTexels_.sample(hit.point.x(), hit.point.y(), footprint_m);
 }
 
-void GroundTexture::greyRow(const SurfaceHit* hits, const float* footprints_m, int count, float* out) const {
-  // Ground and crown pixels are gathered and sampled from their caches together (TexelTiles::sampleMany),
-  // kBatch pixels at a time; roofs and walls one by one.
-  constexpr int kBatch = 256;
-  struct Batch {
-    double x[kBatch], y[kBatch];
-    float footprint[kBatch], value[kBatch];
-    int pixel[kBatch], size = 0;
-    void add(const SurfaceHit& hit, float footprint_m, int at) {
-      x[size] = hit.point.x(), y[size] = hit.point.y(), footprint[size] = footprint_m, pixel[size++] = at;
-    }
-    void sample(const TexelTiles& tiles) { tiles.sampleMany(x, y, footprint, size, value); }
+void GroundTexture::greyRow(const RowHits& row, float* out) const {
+  // The ground under every pixel in one pass (TexelTiles::sampleMany), then the obstacle pixels over it: crowns
+  // gathered and sampled from their cache together, roofs and walls one by one.
+  groundTexels_.sampleMany(row.x.data(), row.y.data(), row.footprint_m.data(), row.size(), out);
+  struct Crowns {
+    std::vector<double> x, y, shade;
+    std::vector<float> footprint, value;
+    std::vector<int> pixel;
   };
-  Batch ground, crowns;
-  double shade[kBatch];  // per crown pixel
-  for (int start = 0; start < count; start += kBatch) {
-    ground.size = crowns.size = 0;
-    for (int i = start; i < std::min(count, start + kBatch); ++i) {
-      if (hits[i].tree) {
-        shade[crowns.size] = crownShade(hits[i]);
-        crowns.add(hits[i], footprints_m[i], i);
-      } else if (hits[i].building) {
-        out[i] = building(hits[i], footprints_m[i]);
-      } else {
-        ground.add(hits[i], footprints_m[i], i);
-      }
+  thread_local Crowns crowns;  // kept from row to row: no allocation per row
+  crowns.x.clear(), crowns.y.clear(), crowns.shade.clear(), crowns.footprint.clear(), crowns.pixel.clear();
+  const Terrain::Tree* toned = nullptr;  // a crown's pixels lie side by side: its tone is hashed once for them
+  double tone = 0.0;
+  for (const RowHits::Obstacle& obstacle : row.obstacles) {
+    const SurfaceHit& hit = obstacle.hit;
+    if (hit.building) {
+      out[obstacle.pixel] = building(hit, obstacle.footprint_m);
+      continue;
     }
-    ground.sample(groundTexels_);
-    for (int k = 0; k < ground.size; ++k) out[ground.pixel[k]] = ground.value[k];
-    crowns.sample(crownTexels_);
-    for (int k = 0; k < crowns.size; ++k) out[crowns.pixel[k]] = crownGrey(shade[k], crowns.value[k]);
+    if (hit.tree != toned) toned = hit.tree, tone = crownTone(*toned);
+    crowns.x.push_back(hit.point.x()), crowns.y.push_back(hit.point.y());
+    crowns.shade.push_back(crownShade(hit, tone));
+    crowns.footprint.push_back(obstacle.footprint_m), crowns.pixel.push_back(obstacle.pixel);
   }
+  const int count = static_cast<int>(crowns.pixel.size());
+  crowns.value.resize(count);
+  crownTexels_.sampleMany(crowns.x.data(), crowns.y.data(), crowns.footprint.data(), count, crowns.value.data());
+  for (int k = 0; k < count; ++k) out[crowns.pixel[k]] = crownGrey(crowns.shade[k], crowns.value[k]);
 }
 
 void GroundTexture::prepare(const SurfaceRegions& seen, int threads) const {
@@ -153,16 +199,34 @@ void GroundTexture::prepare(const SurfaceRegions& seen, int threads) const {
   crownTexels_.require(seen.crowns, threads);
 }
 
-double GroundTexture::grain(double x, double y, double footprint_m) const {
-  return 1.0 + options_.grainContrast * 2.0 * fractal(x, y, 0.02, 1.28, 1.0, footprint_m, salt_ + kGrain);
+double GroundTexture::grain(double x, double y, double footprint_m, TextureMemo& memo) const {
+  return 1.0 + options_.grainContrast * 2.0 * fractal(x, y, 0.02, 1.28, 1.0, footprint_m, salt_ + kGrain, memo);
 }
 
-float GroundTexture::field(double u, double v, std::int64_t i, std::int64_t j, int half, double footprint_m) const {
-  const std::uint32_t salt = salt_ + kCellLayout;
-  const double kind = hash01(2 * i + half, j, salt + 1);
-  const double shade = hash01(2 * i + half, j, salt + 2);
-  const bool alongU = hash01(2 * i + half, j, salt + 3) < 0.5;
-  const double spacing = hash01(2 * i + half, j, salt + 4);
+const FieldCellLayout& GroundTexture::fieldCell(std::int64_t i, std::int64_t j, TextureMemo& memo) const {
+  FieldCellLayout& cell = memo.fieldCell;
+  if (cell.filled && cell.i == i && cell.j == j) return cell;
+  const std::uint32_t layout = salt_ + kCellLayout;
+  cell.filled = true, cell.i = i, cell.j = j;
+  cell.splitAcrossU = hash01(i, j, layout);
+  cell.splitAt = hash01(i, j, layout + 5);
+  cell.splitHedge = hash01(i, j, layout + 6);
+  for (int half = 0; half < 2; ++half)
+    for (std::uint32_t k = 0; k < 4; ++k) cell.fields[half][k] = hash01(2 * i + half, j, layout + 1 + k);
+  // An edge is keyed by the cell it starts: this cell's, and the next cell's along the axis.
+  const std::int64_t endKeys[2][2] = {{i + 1, j}, {i, j + 1}};
+  for (std::uint32_t axis = 0; axis < 2; ++axis) {
+    cell.edgeKinds[axis] = {hash01(i, j, salt_ + kEdgeKind + axis),
+                            hash01(endKeys[axis][0], endKeys[axis][1], salt_ + kEdgeKind + axis)};
+    cell.trackTones[axis] = {hash01(i, j, salt_ + kTrack), hash01(endKeys[axis][0], endKeys[axis][1], salt_ + kTrack)};
+  }
+  return cell;
+}
+
+float GroundTexture::field(double u, double v, const std::array<double, 4>& hashes, double footprint_m,
+                           TextureMemo& memo) const {
+  const double kind = hashes[0], shade = hashes[1], spacing = hashes[3];
+  const bool alongU = hashes[2] < 0.5;
   double grey, period, contrast;
   if (kind < 0.4) {  // ploughed soil: dark, fine furrows
     grey = lerp(70.0, 120.0, shade), period = lerp(0.3, 0.8, spacing), contrast = 0.3;
@@ -174,89 +238,97 @@ float GroundTexture::field(double u, double v, std::int64_t i, std::int64_t j, i
   const double across = alongU ? v : u, along = alongU ? u : v;
   if (period > 0.0) {
     // Rows broken up along their length (plants, clods), so row texture has corners too.
-    const double breaks = 0.5 + fractal(along, across / period, 0.1, 0.8, 0.8, footprint_m, salt_ + kRowBreaks);
+    const double breaks = 0.5 + fractal(along, across / period, 0.1, 0.8, 0.8, footprint_m, salt_ + kRowBreaks, memo);
     grey *= 1.0 + contrast * (2.0 * rows(across, period, footprint_m) - 1.0) * (0.4 + 1.2 * breaks);
   } else {
-    grey *= 1.0 + 0.5 * fractal(u, v, 1.0, 16.0, 0.7, footprint_m, salt_ + kBroad + 7);
+    grey *= 1.0 + 0.5 * fractal(u, v, 1.0, 16.0, 0.7, footprint_m, salt_ + kBroad + 7, memo);
   }
   return static_cast<float>(grey);
 }
 
 float GroundTexture::ground(double x, double y, double footprint_m) const {
+  TextureMemo& memo = threadTextureMemo();
   const double size = options_.fieldSize_m;
   const double u = cosGrid_ * x + sinGrid_ * y, v = -sinGrid_ * x + cosGrid_ * y;
   const double fi = std::floor(u / size), fj = std::floor(v / size);
   const auto i = static_cast<std::int64_t>(fi), j = static_cast<std::int64_t>(fj);
   const double cu = u - fi * size, cv = v - fj * size;  // within the cell
-  const std::uint32_t layout = salt_ + kCellLayout;
+  const FieldCellLayout& cell = fieldCell(i, j, memo);
   // Each cell is split in two across u or v at 30-70 %.
-  const bool splitU = hash01(i, j, layout) < 0.5;
-  const double splitAt = size * lerp(0.3, 0.7, hash01(i, j, layout + 5));
+  const bool splitU = cell.splitAcrossU < 0.5;
+  const double splitAt = size * lerp(0.3, 0.7, cell.splitAt);
   const double splitDistance = (splitU ? cu : cv) - splitAt;
   const int half = splitDistance < 0.0 ? 0 : 1;
-  double grey = field(u, v, i, j, half, footprint_m);
-  grey *= 1.0 + 0.3 * fractal(x, y, 4.0, 64.0, 0.7, footprint_m, salt_ + kBroad);
+  double grey = field(u, v, cell.fields[half], footprint_m, memo);
+  grey *= 1.0 + 0.3 * fractal(x, y, 4.0, 64.0, 0.7, footprint_m, salt_ + kBroad, memo);
 
   // The nearest cell edge in u and in v, each a track, hedge or verge by its own hash.
-  auto edgeStrip = [&](double distance, std::int64_t key1, std::int64_t key2, std::uint32_t axis) {
-    const double pick = hash01(key1, key2, salt_ + kEdgeKind + axis);
+  auto edgeStrip = [&](double distance, int axis, int end) {
+    const double pick = cell.edgeKinds[axis][end];
     const double along = axis == 0 ? v : u;
     if (pick < options_.trackProbability) {
       const double inside = band(distance, kTrackHalfWidth_m, footprint_m);
       if (inside <= 0.0) return;
       const double ruts = band(std::abs(distance) - kRutOffset_m, kRutHalfWidth_m, footprint_m);
-      const double gravel = 1.0 + 0.6 * fractal(along, distance, 0.02, 0.64, 0.9, footprint_m, salt_ + kTrack);
-      const double track = lerp(lerp(175.0, 205.0, hash01(key1, key2, salt_ + kTrack)), 120.0, ruts) * gravel;
+      const double gravel = 1.0 + 0.6 * fractal(along, distance, 0.02, 0.64, 0.9, footprint_m, salt_ + kTrack, memo);
+      const double track = lerp(lerp(175.0, 205.0, cell.trackTones[axis][end]), 120.0, ruts) * gravel;
       grey = lerp(grey, track, inside);
     } else if (pick < options_.trackProbability + options_.hedgeProbability) {
       // Hedges are ragged: their half-width wanders along them.
-      const double ragged = kHedgeHalfWidth_m * (1.0 + 0.6 * fractal(along, 0.0, 0.5, 4.0, 0.8, 0.0, salt_ + kHedge));
+      const double ragged =
+          kHedgeHalfWidth_m * (1.0 + 0.6 * fractal(along, 0.0, 0.5, 4.0, 0.8, 0.0, salt_ + kHedge, memo));
       const double inside = band(distance, ragged, footprint_m);
       if (inside <= 0.0) return;
-      const double leaves = 1.0 + 1.2 * fractal(along, distance, 0.04, 1.28, 0.85, footprint_m, salt_ + kHedge + 1);
+      const double leaves =
+          1.0 + 1.2 * fractal(along, distance, 0.04, 1.28, 0.85, footprint_m, salt_ + kHedge + 1, memo);
       grey = lerp(grey, 55.0 * leaves, inside);
     } else {
       grey = lerp(grey, 140.0, band(distance, kVergeHalfWidth_m, footprint_m));
     }
   };
   if (cu < 0.5 * size)
-    edgeStrip(cu, i, j, 0);
+    edgeStrip(cu, 0, 0);
   else
-    edgeStrip(cu - size, i + 1, j, 0);
+    edgeStrip(cu - size, 0, 1);
   if (cv < 0.5 * size)
-    edgeStrip(cv, i, j, 1);
+    edgeStrip(cv, 1, 0);
   else
-    edgeStrip(cv - size, i, j + 1, 1);
+    edgeStrip(cv - size, 1, 1);
   // The split line: a hedge or a verge.
-  if (hash01(i, j, layout + 6) < options_.hedgeProbability) {
+  if (cell.splitHedge < options_.hedgeProbability) {
     const double inside = band(splitDistance, kHedgeHalfWidth_m, footprint_m);
     if (inside > 0.0)
-      grey = lerp(grey, 55.0 * (1.0 + 1.2 * fractal(u, v, 0.04, 1.28, 0.85, footprint_m, salt_ + kHedge + 2)), inside);
+      grey = lerp(grey, 55.0 * (1.0 + 1.2 * fractal(u, v, 0.04, 1.28, 0.85, footprint_m, salt_ + kHedge + 2, memo)),
+                  inside);
   } else {
     grey = lerp(grey, 140.0, band(splitDistance, kVergeHalfWidth_m, footprint_m));
   }
-  return static_cast<float>(std::clamp(grey * grain(x, y, footprint_m), 0.0, 255.0));
+  return static_cast<float>(std::clamp(grey * grain(x, y, footprint_m, memo), 0.0, 255.0));
 }
 
 float GroundTexture::tree(const SurfaceHit& hit, double footprint_m) const {
-  return crownGrey(crownShade(hit), crownTexels_.sample(hit.point.x(), hit.point.y(), footprint_m));
+  return crownGrey(crownShade(hit, crownTone(*hit.tree)),
+                   crownTexels_.sample(hit.point.x(), hit.point.y(), footprint_m));
 }
 
 float GroundTexture::crownGrey(double shade, float detail) {
   return static_cast<float>(std::clamp(shade * detail, 0.0, 255.0));
 }
 
-double GroundTexture::crownShade(const SurfaceHit& hit) const {
+double GroundTexture::crownTone(const Terrain::Tree& t) const {
+  return lerp(45.0, 80.0, hash01(std::llround(t.centre.x() * 10.0), std::llround(t.centre.y() * 10.0), salt_ + kCrown));
+}
+
+double GroundTexture::crownShade(const SurfaceHit& hit, double tone) const {
   const Terrain::Tree& t = *hit.tree;
   const double r2 = std::min(1.0, (hit.point.head<2>() - t.centre).squaredNorm() / (t.radius * t.radius));
   const double shading = 0.55 + 0.45 * std::sqrt(1.0 - r2);
-  const double tone =
-      lerp(45.0, 80.0, hash01(std::llround(t.centre.x() * 10.0), std::llround(t.centre.y() * 10.0), salt_ + kCrown));
   return tone * shading;
 }
 
 float GroundTexture::crownDetail(double x, double y, double footprint_m) const {
-  return static_cast<float>(1.0 + 2.0 * fractal(x, y, 0.02, 2.56, 1.0, footprint_m, salt_ + kCrown));
+  return static_cast<float>(1.0 +
+                            2.0 * fractal(x, y, 0.02, 2.56, 1.0, footprint_m, salt_ + kCrown, threadTextureMemo()));
 }
 
 float GroundTexture::building(const SurfaceHit& hit, double footprint_m) const {
@@ -270,7 +342,8 @@ float GroundTexture::building(const SurfaceHit& hit, double footprint_m) const {
   const double toEdge = std::min(b.halfSize.x() - std::abs(along), b.halfSize.y() - std::abs(across));
   const double rim = band(toEdge, kRoofRim_m, footprint_m);
   const double corrugation = 1.0 + 0.12 * (2.0 * rows(along, 0.4, footprint_m) - 1.0);
-  const double weathering = 1.0 + 0.3 * fractal(along, across, 0.05, 2.0, 0.8, footprint_m, salt_ + kRoof + 1);
+  const double weathering =
+      1.0 + 0.3 * fractal(along, across, 0.05, 2.0, 0.8, footprint_m, salt_ + kRoof + 1, threadTextureMemo());
   return static_cast<float>(std::clamp(lerp(tone * corrugation * weathering, 80.0, rim), 0.0, 255.0));
 }
 

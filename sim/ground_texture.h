@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -7,6 +8,9 @@
 #include "sim/texel_tiles.h"
 
 namespace lrsvo {
+
+struct TextureMemo;      // ground_texture.cpp: what the texture reuses from one texel to the next
+struct FieldCellLayout;  // ground_texture.cpp: the hashes that lay out one cell of the field grid
 
 // Rural farmland seen from above, as grey levels: a grid of fields (rotated
 // by a seeded angle), each cell split in two; each field ploughed, in crop
@@ -37,21 +41,26 @@ class GroundTexture : public SurfaceTexture {
   // Ground and crown hits from the caches filled by prepare() (or directly,
   // to the same value, outside them); roofs and walls directly.
   float grey(const SurfaceHit& hit, double footprint_m) const override;
-  void greyRow(const SurfaceHit* hits, const float* footprints_m, int count, float* out) const override;
+  void greyRow(const RowHits& row, float* out) const override;
   // The ground alone (fields, tracks, hedges) at (x, y), evaluated directly.
   float ground(double x, double y, double footprint_m) const;
 
  private:
-  float field(double u, double v, std::int64_t i, std::int64_t j, int half, double footprint_m) const;
+  // The layout of field cell (i, j), from the memo when the memo holds it.
+  const FieldCellLayout& fieldCell(std::int64_t i, std::int64_t j, TextureMemo& memo) const;
+  // One field's grey at (u, v), from its four hashes: kind, shade, row direction, row spacing.
+  float field(double u, double v, const std::array<double, 4>& hashes, double footprint_m, TextureMemo& memo) const;
   float tree(const SurfaceHit& hit, double footprint_m) const;
-  // A crown's tone, shaded towards its rim, at a hit on it; tree() is this times crownDetail(), clamped.
-  double crownShade(const SurfaceHit& hit) const;
+  // A crown's tone (its own grey, by a hash of its position), and that tone shaded towards the rim at a hit on
+  // it; tree() is the shade times crownDetail(), clamped.
+  double crownTone(const Terrain::Tree& tree) const;
+  double crownShade(const SurfaceHit& hit, double tone) const;
   // A crown's grey from its shade and its detail (the one formula of tree() and greyRow()).
   static float crownGrey(double shade, float detail);
   // The leafy clumps of every crown, a texture of x and y (cached in crownTexels_).
   float crownDetail(double x, double y, double footprint_m) const;
   float building(const SurfaceHit& hit, double footprint_m) const;
-  double grain(double x, double y, double footprint_m) const;
+  double grain(double x, double y, double footprint_m, TextureMemo& memo) const;
 
   GroundTextureOptions options_;
   std::uint32_t salt_;

@@ -65,11 +65,10 @@ cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d
   cv::Mat scene(camera.height, camera.width, CV_32FC1);
   const int chunks = (camera.height + kRowsPerChunk - 1) / kRowsPerChunk;
   poolFor(0, chunks, options_.threads, [&](int chunk) {
-    std::vector<SurfaceHit> hits(camera.width);
-    std::vector<float> footprints(camera.width);
+    RowHits row;
     for (int v = chunk * kRowsPerChunk; v < std::min(camera.height, (chunk + 1) * kRowsPerChunk); ++v) {
-      view.hitRow(v, 0, camera.width, hits.data(), footprints.data());
-      texture_.greyRow(hits.data(), footprints.data(), camera.width, scene.ptr<float>(v));
+      view.hitRow(v, 0, camera.width, row);
+      texture_.greyRow(row, scene.ptr<float>(v));
     }
   });
   ++times_.images;

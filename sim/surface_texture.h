@@ -16,6 +16,45 @@ struct SurfaceHit {
   const Terrain::Building* building = nullptr;      // the building hit (roof or wall), if any
 };
 
+// What a row of pixels sees (SurfaceView::hitRow()), kept apart by surface:
+// the ground, where every pixel's ray meets it, in arrays the texture samples
+// in one pass; and the pixels whose ray meets a tree crown or a building
+// first, with that hit.
+struct RowHits {
+  struct Obstacle {
+    int pixel;
+    SurfaceHit hit;
+    float footprint_m;
+  };
+  std::vector<double> x, y, z;      // per pixel: the ground hit (world)
+  std::vector<float> footprint_m;   // per pixel: its footprint on the ground
+  std::vector<Obstacle> obstacles;  // the pixels whose ray meets an obstacle before the ground
+  std::vector<int> obstacleAt;      // per pixel: its entry in obstacles, or -1
+
+  int size() const { return static_cast<int>(x.size()); }
+  // Sized for `count` pixels, no obstacle hits yet.
+  void reset(int count);
+  // What pixel i sees, and the footprint there.
+  SurfaceHit hit(int i) const;
+  float footprintAt(int i) const;
+};
+
+inline void RowHits::reset(int count) {
+  x.resize(count), y.resize(count), z.resize(count), footprint_m.resize(count);
+  obstacleAt.assign(count, -1);
+  obstacles.clear();
+}
+
+inline SurfaceHit RowHits::hit(int i) const {
+  const int k = obstacleAt[i];
+  return k < 0 ? SurfaceHit{Eigen::Vector3d(x[i], y[i], z[i]), nullptr, nullptr} : obstacles[k].hit;
+}
+
+inline float RowHits::footprintAt(int i) const {
+  const int k = obstacleAt[i];
+  return k < 0 ? footprint_m[i] : obstacles[k].footprint_m;
+}
+
 // What one image sees of each surface that a texture may cache
 // (SurfaceView::regions()): the ground, and the tree crowns in view.
 struct SurfaceRegions {
@@ -35,10 +74,11 @@ class SurfaceTexture {
   // being shaded.
   virtual void prepare(const SurfaceRegions& seen, int threads) const { (void)seen, (void)threads; }
   virtual float grey(const SurfaceHit& hit, double footprint_m) const = 0;
-  // grey() of `count` hits into `out`: the renderer shades a row at a time,
-  // which a texture may do faster than one virtual call per pixel.
-  virtual void greyRow(const SurfaceHit* hits, const float* footprints_m, int count, float* out) const {
-    for (int i = 0; i < count; ++i) out[i] = grey(hits[i], footprints_m[i]);
+  // grey() of every pixel of a row into out[0 .. row.size() - 1]: the
+  // renderer shades a row at a time, which a texture may do faster than one
+  // virtual call per pixel.
+  virtual void greyRow(const RowHits& row, float* out) const {
+    for (int i = 0; i < row.size(); ++i) out[i] = grey(row.hit(i), row.footprintAt(i));
   }
 };
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -36,14 +37,14 @@ class SurfaceView {
   // widened where the ray meets the ground obliquely.
   double footprint(const SurfaceHit& hit) const;
   // hit(u, v) and footprint() for u = first .. first + count - 1 of row v
-  // (inside the image), into hits[0 ..] and footprints[0 ..], to rounding:
+  // (inside the image), into row's pixels 0 .. count - 1, to rounding:
   // within a cell of the ground grid the ray and the ground depth are linear
   // in u, so they advance by a constant step. Only the footprint differs
   // more: its factor for the ray's direction is interpolated between the
   // nodes (5.6e-4 relative at most at a 417 px focal length; it falls
   // with the square of a cell's angle, so less at 1667 px). Each obstacle is tested over the pixels of its bounding box
   // alone.
-  void hitRow(int v, int first, int count, SurfaceHit* hits, float* footprints) const;
+  void hitRow(int v, int first, int count, RowHits& row) const;
   // The ground this view sees, one region per cell of the ground grid: the
   // box of its corners' ground points, widened by a footprint, and their
   // footprints, widened by 1 % (the surface curves a little between corners).
@@ -56,6 +57,13 @@ class SurfaceView {
 
  private:
   static constexpr int kTile_px = 32;  // obstacles are listed per square tile of the image
+
+  // A tree crown as every ray from this view's centre meets it: the scale that makes its ellipsoid a unit
+  // sphere, the centre in those coordinates (q0), and |q0|^2 - 1.
+  struct CrownFromCentre {
+    Eigen::Vector3d scale, q0;
+    double c;
+  };
 
   Eigen::Vector3d ray(double u, double v) const;  // world direction, unit depth along the optical axis
   double groundDepth(const Eigen::Vector3d& direction) const;
@@ -81,13 +89,16 @@ class SurfaceView {
   double meanFocal_;  // sqrt(fx fy), pixels
   Eigen::Matrix3d worldFromCameraRotation_;
   Eigen::Vector3d centre_;
+  double groundBelowCentre_ = 0.0;  // where each ray's Newton solve starts: the ground's height below the centre
   Eigen::Isometry3d cameraFromWorld_;
   int nodesU_ = 0, nodesV_ = 0;
   std::vector<double> groundDepth_;        // [v node][u node]
   std::vector<double> footprintPerDepth_;  // [v node][u node]: footprintAlong() of the node's ray
   Terrain::Obstacles obstacles_;
   int tilesU_ = 0, tilesV_ = 0;
-  std::vector<std::vector<ObstacleSpan>> tiles_;  // [tile]
+  std::vector<std::vector<ObstacleSpan>> tiles_;       // [tile]
+  std::vector<CrownFromCentre> crownsFromCentre_;      // parallel to obstacles_.trees
+  std::vector<std::array<double, 2>> buildingStarts_;  // the centre in each building's axes
   std::vector<TexelRegion> crownRegions_;
 };
 

@@ -26,12 +26,8 @@ TexelTiles::TexelTiles(Function function, double baseTexel_m, int keepImages)
 }
 
 void TexelTiles::sampleMany(const double* x, const double* y, const float* footprints_m, int count, float* out) const {
-  int i = 0;
-  if (simd())
-    for (; i + 4 <= count; i += 4)
-      if (!sampleFourAvx2(x + i, y + i, footprints_m + i, out + i))
-        for (int k = i; k < i + 4; ++k) out[k] = sample(x[k], y[k], footprints_m[k]);
-  for (; i < count; ++i) out[i] = sample(x[i], y[i], footprints_m[i]);
+  if (simd()) return sampleManyAvx2(x, y, footprints_m, count, out);
+  for (int i = 0; i < count; ++i) out[i] = sample(x[i], y[i], footprints_m[i]);
 }
 
 float TexelTiles::texel(std::int64_t ix, std::int64_t iy, int level) const {

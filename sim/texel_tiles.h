@@ -98,11 +98,14 @@ class TexelTiles {
   void fill(Tile& tile, const Key& key) const;  // a new tile's pairs
   std::vector<TileRange> tileRanges(const std::vector<TexelRegion>& regions) const;
   void layOut(const std::vector<TileRange>& ranges);
-  // sample() at four points with AVX2 (sim/texel_tiles_avx2.cpp), the same
-  // operations in the same order; false, having written nothing, where a
-  // point needs what only the scalar path does: the four at different levels,
-  // a tile the grids do not hold, a footprint below the base texel.
-  bool sampleFourAvx2(const double* x, const double* y, const float* footprints_m, float* out) const;
+  // sampleMany() with AVX2 (sim/texel_tiles_avx2.cpp): sample()'s operations in the same order, four points at
+  // a time. Each four are located (level, weights, texels) some blocks before they are blended, and their
+  // texels requested from memory meanwhile: the lookup's time is otherwise spent waiting on those loads.
+  void sampleManyAvx2(const double* x, const double* y, const float* footprints_m, int count, float* out) const;
+  struct FourTexels;  // four located points (sim/texel_tiles_avx2.cpp)
+  // Locates four points; false where one needs what only sample() does: the four at different levels, a tile
+  // the grids do not hold, a footprint below the base texel.
+  bool locateFourAvx2(const double* x, const double* y, const float* footprints_m, FourTexels& found) const;
 
   Function function_;
   double base_m_;

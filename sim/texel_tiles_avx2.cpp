@@ -33,8 +33,15 @@ LRSVO_AVX2 __m256d bilinearOfFour(__m256d a, __m256d b, __m128 t00, __m128 t10, 
 
 }  // namespace
 
-LRSVO_AVX2 bool TexelTiles::sampleFourAvx2(const double* x, const double* y, const float* footprints_m,
-                                           float* out) const {
+// Four points located: their blend fractions between the two levels, bilinear weights, and the first of each
+// one's four texel pairs (t00; t10 beside it, t01 and t11 a tile row below).
+struct TexelTiles::FourTexels {
+  __m256d fraction, a, b;
+  const TexelPair* texels[4];
+};
+
+LRSVO_AVX2 bool TexelTiles::locateFourAvx2(const double* x, const double* y, const float* footprints_m,
+                                           FourTexels& found) const {
   // levels() for four footprints: the level from the exponent (all four the same, from 0 to kLevels - 2,
   // where levels() needs none of its special cases), the blend fraction from the mantissa.
   const __m256d scaled = _mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(footprints_m)), _mm256_set1_pd(inverseTexel_[0]));
@@ -47,8 +54,7 @@ LRSVO_AVX2 bool TexelTiles::sampleFourAvx2(const double* x, const double* y, con
   const int level = static_cast<int>(firstExponent - 1023);
   const __m256d mantissa = _mm256_castsi256_pd(_mm256_or_si256(
       _mm256_and_si256(bits, _mm256_set1_epi64x(0x000fffffffffffffLL)), _mm256_set1_epi64x(1022LL << 52)));
-  const __m256d one = _mm256_set1_pd(1.0);
-  const __m256d fraction = _mm256_sub_pd(_mm256_mul_pd(_mm256_set1_pd(2.0), mantissa), one);
+  found.fraction = _mm256_sub_pd(_mm256_mul_pd(_mm256_set1_pd(2.0), mantissa), _mm256_set1_pd(1.0));
 
   const LevelGrid& grid = grids_[level];
   constexpr std::int64_t kInt32Safe = std::int64_t{1} << 30;
@@ -73,38 +79,86 @@ LRSVO_AVX2 bool TexelTiles::sampleFourAvx2(const double* x, const double* y, con
                     _mm_and_si128(_mm_cmpgt_epi32(row, minusOne),
                                   _mm_cmplt_epi32(row, _mm_set1_epi32(static_cast<int>(grid.height)))));
   if (_mm_movemask_ps(_mm_castsi128_ps(inGrid)) != 0xF) return false;
-  // The loads themselves are scalar: on AMD's cores a gather costs more than its loads.
   alignas(16) int slot[4], offset[4];
   _mm_store_si128(reinterpret_cast<__m128i*>(slot),
                   _mm_add_epi32(_mm_mullo_epi32(row, _mm_set1_epi32(static_cast<int>(grid.width))), column));
   const __m128i u = _mm_sub_epi32(ix, _mm_slli_epi32(tx, kTileBits)),
                 v = _mm_sub_epi32(iy, _mm_slli_epi32(ty, kTileBits));
   _mm_store_si128(reinterpret_cast<__m128i*>(offset), _mm_add_epi32(_mm_mullo_epi32(v, _mm_set1_epi32(kTile + 1)), u));
-  // Per point, its row of pairs (t00 and t10 side by side) and the row below: [value, coarser] x 2 each.
-  static_assert(sizeof(TexelPair) == 2 * sizeof(float), "two pairs are loaded as four floats");
-  __m128 upper[4], lower[4];
   for (int i = 0; i < 4; ++i) {
     const TexelPair* tile = grid.texels[slot[i]];
     if (tile == nullptr) return false;
-    const TexelPair* t = tile + offset[i];
-    upper[i] = _mm_loadu_ps(&t->value);
-    lower[i] = _mm_loadu_ps(&t[kTile + 1].value);
+    found.texels[i] = tile + offset[i];
   }
+  found.a = _mm256_sub_pd(gx, fx), found.b = _mm256_sub_pd(gy, fy);
+  return true;
+}
+
+namespace {
+
+// The texel rows of four located points blended into their four samples.
+LRSVO_AVX2 void blendFour(const __m256d fraction, const __m256d a, const __m256d b, __m128 upper[4], __m128 lower[4],
+                          float* out) {
   _MM_TRANSPOSE4_PS(upper[0], upper[1], upper[2], upper[3]);  // t00 values, t00 coarser, t10 values, t10 coarser
   _MM_TRANSPOSE4_PS(lower[0], lower[1], lower[2], lower[3]);  // the same for t01, t11
-  const __m256d a = _mm256_sub_pd(gx, fx), b = _mm256_sub_pd(gy, fy);
   const __m256d fine = bilinearOfFour(a, b, upper[0], upper[2], lower[0], lower[2]);
   const __m256d coarse = bilinearOfFour(a, b, upper[1], upper[3], lower[1], lower[3]);
   const __m256d blended =
-      _mm256_add_pd(_mm256_mul_pd(_mm256_sub_pd(one, fraction), fine), _mm256_mul_pd(fraction, coarse));
+      _mm256_add_pd(_mm256_mul_pd(_mm256_sub_pd(_mm256_set1_pd(1.0), fraction), fine), _mm256_mul_pd(fraction, coarse));
   _mm_storeu_ps(out, _mm256_cvtpd_ps(blended));
-  return true;
+}
+
+}  // namespace
+
+LRSVO_AVX2 void TexelTiles::sampleManyAvx2(const double* x, const double* y, const float* footprints_m, int count,
+                                           float* out) const {
+  // Blocks of four located ahead of their blend: about as far as a pixel row's texel loads take to arrive
+  // (measured with `lrsvo bench render`).
+  constexpr int kAhead = 32;
+  static_assert(sizeof(TexelPair) == 2 * sizeof(float), "two pairs are loaded as four floats");
+  FourTexels ahead[kAhead];
+  bool located[kAhead];
+  const int blocks = count / 4;
+  // Block k is located into slot k % kAhead on step k and blended from it on step k + kAhead, before that
+  // step locates the next block into the same slot.
+  for (int step = 0; step < blocks + kAhead; ++step) {
+    const int slot = step % kAhead;
+    if (step >= kAhead) {
+      const int first = 4 * (step - kAhead);
+      if (located[slot]) {
+        // Per point, its row of pairs (t00 and t10 side by side) and the row below: [value, coarser] x 2
+        // each. The loads themselves are scalar: on AMD's cores a gather costs more than its loads.
+        const FourTexels& four = ahead[slot];
+        __m128 upper[4], lower[4];
+        for (int i = 0; i < 4; ++i) {
+          upper[i] = _mm_loadu_ps(&four.texels[i]->value);
+          lower[i] = _mm_loadu_ps(&four.texels[i][kTile + 1].value);
+        }
+        blendFour(four.fraction, four.a, four.b, upper, lower, out + first);
+      } else {
+        for (int i = first; i < first + 4; ++i) out[i] = sample(x[i], y[i], footprints_m[i]);
+      }
+    }
+    if (step < blocks) {
+      const int first = 4 * step;
+      located[slot] = locateFourAvx2(x + first, y + first, footprints_m + first, ahead[slot]);
+      if (located[slot])
+        for (const TexelPair* t : ahead[slot].texels) {
+          _mm_prefetch(reinterpret_cast<const char*>(t), _MM_HINT_T0);
+          _mm_prefetch(reinterpret_cast<const char*>(t + kTile + 1), _MM_HINT_T0);
+        }
+    }
+  }
+  for (int i = 4 * blocks; i < count; ++i) out[i] = sample(x[i], y[i], footprints_m[i]);
 }
 
 #else
 
 bool TexelTiles::simd() { return false; }
-bool TexelTiles::sampleFourAvx2(const double*, const double*, const float*, float*) const { return false; }
+void TexelTiles::sampleManyAvx2(const double* x, const double* y, const float* footprints_m, int count,
+                                float* out) const {
+  for (int i = 0; i < count; ++i) out[i] = sample(x[i], y[i], footprints_m[i]);
+}
 
 #endif
 

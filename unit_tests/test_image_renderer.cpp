@@ -184,24 +184,24 @@ TEST(SurfaceViewRows, HitRowGivesWhatHitGives) {
   const Terrain terrain(crowdedTerrain());
   const Camera camera = smallCamera();
   const SurfaceView view(terrain, camera, obliqueCameraFromWorld());
-  std::vector<SurfaceHit> hits(camera.width);
-  std::vector<float> footprints(camera.width);
+  RowHits row;
   int compared = 0, onObstacles = 0, otherwise = 0;
   double worstPoint = 0.0, worstFootprint = 0.0;
   for (int v = 0; v < camera.height; v += 3) {
     for (int first = 0; first < camera.width;) {
       const int count = std::min(camera.width - first, 1 + (v + first) % 53);  // segments of 1-53 pixels
-      view.hitRow(v, first, count, hits.data(), footprints.data());
+      view.hitRow(v, first, count, row);
+      ASSERT_EQ(row.size(), count);
       for (int k = 0; k < count; ++k) {
-        const SurfaceHit exact = view.hit(first + k, v);
+        const SurfaceHit exact = view.hit(first + k, v), traced = row.hit(k);
         ++compared;
-        if (exact.tree != hits[k].tree || exact.building != hits[k].building) {
+        if (exact.tree != traced.tree || exact.building != traced.building) {
           ++otherwise;
           continue;
         }
         onObstacles += exact.tree != nullptr || exact.building != nullptr;
-        worstPoint = std::max(worstPoint, (exact.point - hits[k].point).norm());
-        worstFootprint = std::max(worstFootprint, std::abs(footprints[k] / view.footprint(exact) - 1.0));
+        worstPoint = std::max(worstPoint, (exact.point - traced.point).norm());
+        worstFootprint = std::max(worstFootprint, std::abs(row.footprintAt(k) / view.footprint(exact) - 1.0));
       }
       first += count;
     }
@@ -219,24 +219,21 @@ TEST(SurfaceViewRows, HitRowGivesWhatHitGives) {
 
 // Every ground hit of a view lies inside one of its ground regions, with its
 // footprint inside that region's range: what the texture caches for an image.
+// That includes the ground under crowns and roofs, which the renderer samples too.
 TEST(SurfaceViewRows, GroundRegionsHoldEveryGroundHit) {
-  TerrainOptions options;
-  options.treeDensity_per_km2 = 0.0;
-  options.buildingDensity_per_km2 = 0.0;
-  const Terrain terrain(options);
+  const Terrain terrain(crowdedTerrain());
   const Camera camera = smallCamera();
   const SurfaceView view(terrain, camera, obliqueCameraFromWorld());
   const std::vector<TexelRegion> regions = view.groundRegions();
   ASSERT_FALSE(regions.empty());
-  std::vector<SurfaceHit> hits(camera.width);
-  std::vector<float> footprints(camera.width);
+  RowHits row;
   int outside = 0;
   for (int v = 0; v < camera.height; ++v) {
-    view.hitRow(v, 0, camera.width, hits.data(), footprints.data());
+    view.hitRow(v, 0, camera.width, row);
     for (int u = 0; u < camera.width; ++u) {
       const bool held = std::any_of(regions.begin(), regions.end(), [&](const TexelRegion& r) {
-        return r.box.contains(hits[u].point.head<2>()) && footprints[u] >= r.minFootprint_m &&
-               footprints[u] <= r.maxFootprint_m;
+        return r.box.contains(Eigen::Vector2d(row.x[u], row.y[u])) && row.footprint_m[u] >= r.minFootprint_m &&
+               row.footprint_m[u] <= r.maxFootprint_m;
       });
       outside += !held;
     }
@@ -252,17 +249,16 @@ TEST(SurfaceViewRows, CrownRegionsHoldEveryCrownHit) {
   const SurfaceView view(terrain, camera, obliqueCameraFromWorld());
   const std::vector<TexelRegion>& regions = view.crownRegions();
   ASSERT_FALSE(regions.empty());
-  std::vector<SurfaceHit> hits(camera.width);
-  std::vector<float> footprints(camera.width);
+  RowHits row;
   int crownHits = 0, outside = 0;
   for (int v = 0; v < camera.height; ++v) {
-    view.hitRow(v, 0, camera.width, hits.data(), footprints.data());
-    for (int u = 0; u < camera.width; ++u) {
-      if (hits[u].tree == nullptr) continue;
+    view.hitRow(v, 0, camera.width, row);
+    for (const RowHits::Obstacle& obstacle : row.obstacles) {
+      if (obstacle.hit.tree == nullptr) continue;
       ++crownHits;
       const bool held = std::any_of(regions.begin(), regions.end(), [&](const TexelRegion& r) {
-        return r.box.contains(hits[u].point.head<2>()) && footprints[u] >= r.minFootprint_m &&
-               footprints[u] <= r.maxFootprint_m;
+        return r.box.contains(obstacle.hit.point.head<2>()) && obstacle.footprint_m >= r.minFootprint_m &&
+               obstacle.footprint_m <= r.maxFootprint_m;
       });
       outside += !held;
     }

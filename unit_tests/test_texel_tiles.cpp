@@ -114,6 +114,15 @@ TEST(TexelTiles, SampleManyGivesSampleBitForBit) {
     ASSERT_EQ(std::bit_cast<std::uint32_t>(many[i]), std::bit_cast<std::uint32_t>(one))
         << "point " << i << " at (" << x[i] << ", " << y[i] << "), footprint " << footprints[i];
   }
+  // Calls of any length, shorter than the AVX2 path's look-ahead or not, write their points and no others.
+  for (const int length : {0, 1, 3, 4, 5, 31, 64, 127, 129, 513}) {
+    std::vector<float> part(length + 1, -1.0f);
+    tiles.sampleMany(x.data() + 7, y.data() + 7, footprints.data() + 7, length, part.data());
+    for (int i = 0; i < length; ++i)
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(part[i]), std::bit_cast<std::uint32_t>(many[7 + i]))
+          << "point " << i << " of " << length;
+    EXPECT_EQ(part[length], -1.0f) << "written past " << length << " points";
+  }
 }
 
 TEST(TexelTiles, RejectsANonPositiveBaseTexel) { EXPECT_THROW(TexelTiles(affine, 0.0), Error); }
