@@ -20,6 +20,7 @@
 #include "apps/run_setup.h"
 #include "eval/odometry_run.h"
 #include "graph/error.h"
+#include "sim/sim_frame_source.h"
 
 namespace lrsvo::cli {
 namespace {
@@ -39,7 +40,8 @@ double residentMiB() {
   return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
 }
 
-void printStages(const RunTotals& t) {
+// `render`: a sim: source's renderer time by stage, or null for other sources.
+void printStages(const RunTotals& t, const RenderTimes* render) {
   const double n = std::max(1, t.frames);
   const double odometry_ms = 1e3 * t.odometrySeconds() / n;
   auto row = [&](const char* stage, double total_ms) {
@@ -55,6 +57,12 @@ void printStages(const RunTotals& t) {
   row("window adjustment", t.backEnd.bundle_ms);
   std::printf("  %-22s %8.2f ms/frame  = %.1f fps (rendering: %.1f ms/frame, not counted)\n", "odometry", odometry_ms,
               t.fps(), 1e3 * t.sourceSeconds / n);
+  if (render == nullptr) return;
+  std::printf(
+      "  rendering, by stage: view %.2f, texture caches %.2f, trace and shade %.2f, sensor %.2f ms/frame "
+      "(%.2f images a frame); rendering / odometry %.2f\n",
+      1e3 * render->view_s / n, 1e3 * render->texture_s / n, 1e3 * render->shade_s / n, 1e3 * render->sensor_s / n,
+      render->images / n, t.sourceSeconds / t.odometrySeconds());
 }
 
 void benchRun(BenchRunOptions o) {
@@ -102,7 +110,8 @@ void benchRun(BenchRunOptions o) {
       std::fprintf(stderr, "\n");
       std::printf("\nafter %d frames: resident memory %.1f MiB, %d tracked, %d keyframes\n", frame, residentMiB(),
                   totals.tracked, totals.keyframes);
-      printStages(totals);
+      const auto* sim = dynamic_cast<const SimFrameSource*>(source.get());
+      printStages(totals, sim ? &sim->renderTimes() : nullptr);
       ++next;
     }
   }

@@ -5,20 +5,14 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "graph/error.h"
 #include "sim/inline_math.h"
 #include "sim/seed_mix.h"
+#include "sim/value_noise.h"
 
 namespace lrsvo {
-
-// The corner hashes of one lattice cell of one noise layer, as valueNoise() last used them.
-struct LatticeCell {
-  bool filled = false;
-  std::uint32_t salt = 0;
-  std::int64_t ix = 0, iy = 0;
-  double a = 0.0, b = 0.0, c = 0.0, d = 0.0;
-};
 
 // The hashes that lay out one cell of the field grid: its split line, its two fields and the four edges
 // around it. Every texel of the cell reads the same ones.
@@ -31,17 +25,13 @@ struct FieldCellLayout {
   std::array<std::array<double, 2>, 2> trackTones{};
 };
 
-// What the ground texture reuses from one texel to the next on this thread. A texture is evaluated along rows
-// of texels a fraction of a lattice cell apart, so most noise octaves stay in one cell for many texels: their
-// four corner hashes (six mixes) are looked up, not recomputed; and a field cell (120 m) holds many tiles.
-// A pure memo: values do not depend on it.
+// What the ground texture reuses from one texel to the next on this thread: the noise's lattice cells
+// (sim/value_noise.h), and the layout of the field cell (120 m, many tiles) the last texel lay in. A pure
+// memo: values do not depend on it.
 struct TextureMemo {
-  static constexpr int kOctaveBits = 3, kLayerBits = 5;  // slots for 32 layers of 8 octaves
-  std::array<LatticeCell, 1 << (kOctaveBits + kLayerBits)> cells;
+  NoiseMemo noise;
   FieldCellLayout fieldCell;
-  LatticeCell& cell(std::uint32_t salt, std::uint32_t octave) {
-    return cells[((salt << kOctaveBits) + octave) & (cells.size() - 1)];
-  }
+  std::vector<double> x, broad, grain;  // a row's texel positions and noise (kept: no allocation per row)
 };
 
 namespace {
@@ -49,80 +39,23 @@ namespace {
 // Salts of the independent noise layers.
 enum Layer : std::uint32_t { kGrain = 1, kBroad, kRowBreaks, kTrack, kHedge, kCrown, kRoof, kCellLayout, kEdgeKind };
 
+// The noise of the broad tone, the grain (2 cm - 1 m) and the crowns' leafy clumps.
+constexpr Octaves kBroadOctaves{4.0, 64.0, 0.7}, kGrainOctaves{0.02, 1.28, 1.0}, kCrownOctaves{0.02, 2.56, 1.0};
+constexpr Octaves kRaggedOctaves{0.5, 4.0, 0.8};  // a hedge's wandering width
 constexpr double kBaseTexel_m = 0.01;  // the finest cached ground texels: half the footprint of a pixel at 30 m
 constexpr double kTrackHalfWidth_m = 1.8, kRutOffset_m = 0.8, kRutHalfWidth_m = 0.2;
 constexpr double kHedgeHalfWidth_m = 1.2, kVergeHalfWidth_m = 0.35, kRoofRim_m = 0.25;
 
-std::uint64_t mix(std::uint64_t h) {
-  h ^= h >> 31;
-  h *= 0xbf58476d1ce4e5b9ULL;
-  h ^= h >> 29;
-  h *= 0x94d049bb133111ebULL;
-  return h ^ (h >> 32);
-}
-
-// A hash of a lattice point and a salt, uniform in [0, 1), in two steps:
-// the row's part (y and the salt), then the point's.
-std::uint64_t rowHash(std::int64_t y, std::uint32_t salt) {
-  return mix(static_cast<std::uint64_t>(y) + (static_cast<std::uint64_t>(salt) << 40));
-}
-double pointHash01(std::int64_t x, std::uint64_t row) {
-  return static_cast<double>(mix(static_cast<std::uint64_t>(x) * 0x9e3779b97f4a7c15ULL ^ row) >> 11) * 0x1.0p-53;
-}
-double hash01(std::int64_t x, std::int64_t y, std::uint32_t salt) { return pointHash01(x, rowHash(y, salt)); }
-
-// Constant-initialised: reaching it costs no construction guard.
+// One per thread; a row of texels reaches it once.
 TextureMemo& threadTextureMemo() {
   thread_local TextureMemo memo;
   return memo;
-}
-
-// Smooth value noise of unit wavelength in [-0.5, 0.5), its cell's corners kept in `cell`.
-double valueNoise(double x, double y, std::uint32_t salt, LatticeCell& cell) {
-  const std::int64_t ix = floorIndex(x), iy = floorIndex(y);
-  if (!cell.filled || cell.ix != ix || cell.iy != iy || cell.salt != salt) {
-    const std::uint64_t row0 = rowHash(iy, salt), row1 = rowHash(iy + 1, salt);
-    cell = {true,
-            salt,
-            ix,
-            iy,
-            pointHash01(ix, row0),
-            pointHash01(ix + 1, row0),
-            pointHash01(ix, row1),
-            pointHash01(ix + 1, row1)};
-  }
-  const double tx = x - static_cast<double>(ix), ty = y - static_cast<double>(iy);
-  const double sx = tx * tx * (3.0 - 2.0 * tx), sy = ty * ty * (3.0 - 2.0 * ty);
-  const double a = cell.a, b = cell.b, c = cell.c, d = cell.d;
-  return a + (b - a) * sx + (c - a) * sy + (a - b - c + d) * sx * sy - 0.5;
 }
 
 // How much of a pattern of wavelength `lambda` survives averaging over a
 // pixel footprint: none at or below 2 footprints (the sampling's Nyquist
 // limit, so nothing aliases), all from 4 footprints up.
 double keep(double lambda, double footprint) { return std::clamp(lambda / (2.0 * footprint) - 1.0, 0.0, 1.0); }
-
-// Octaves of value noise from lambdaMax down to lambdaMin (halving), each
-// `roughness` times the amplitude of the one above, those finer than the
-// footprint faded out; scaled so that its spread is that of one octave
-// (about +-0.5) however many octaves it sums.
-double fractal(double x, double y, double lambdaMin, double lambdaMax, double roughness, double footprint,
-               std::uint32_t salt, TextureMemo& memo) {
-  double sum = 0.0, amplitude = 1.0, total = 0.0;
-  std::uint32_t octave = 0;
-  // Wavelengths halve exactly, so their inverses double exactly: no division per octave.
-  const double halfInverseFootprint = 0.5 / footprint;
-  double inverseLambda = 1.0 / lambdaMax;
-  for (double lambda = lambdaMax; lambda >= lambdaMin;
-       lambda *= 0.5, inverseLambda *= 2.0, amplitude *= roughness, ++octave) {
-    total += amplitude * amplitude;
-    const double weight = std::clamp(lambda * halfInverseFootprint - 1.0, 0.0, 1.0);  // keep(lambda, footprint)
-    if (weight > 0.0)
-      sum += weight * amplitude *
-             valueNoise(x * inverseLambda, y * inverseLambda, salt * 131u + octave, memo.cell(salt, octave));
-  }
-  return sum / std::sqrt(total);
-}
 
 // The part of a pixel footprint wide box filter inside a band of half-width
 // `halfWidth` at distance d from its centre line: a sharp edge, anti-aliased.
@@ -142,8 +75,11 @@ double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
 GroundTexture::GroundTexture(const GroundTextureOptions& options)
     : options_(options),
-      groundTexels_([this](double x, double y, double footprint) { return ground(x, y, footprint); }, kBaseTexel_m),
-      crownTexels_([this](double x, double y, double footprint) { return crownDetail(x, y, footprint); },
+      groundTexels_(TexelTiles::RowFunction([this](std::int64_t ix, std::int64_t iy, double texel_m, int count,
+                                                   float* out) { groundRow(ix, iy, texel_m, count, out); }),
+                    kBaseTexel_m),
+      crownTexels_(TexelTiles::RowFunction([this](std::int64_t ix, std::int64_t iy, double texel_m, int count,
+                                                  float* out) { crownDetailRow(ix, iy, texel_m, count, out); }),
                    kBaseTexel_m) {
   const auto& o = options_;
   if (!(std::isfinite(o.fieldSize_m) && o.fieldSize_m > 0.0))
@@ -199,10 +135,6 @@ void GroundTexture::prepare(const SurfaceRegions& seen, int threads) const {
   crownTexels_.require(seen.crowns, threads);
 }
 
-double GroundTexture::grain(double x, double y, double footprint_m, TextureMemo& memo) const {
-  return 1.0 + options_.grainContrast * 2.0 * fractal(x, y, 0.02, 1.28, 1.0, footprint_m, salt_ + kGrain, memo);
-}
-
 const FieldCellLayout& GroundTexture::fieldCell(std::int64_t i, std::int64_t j, TextureMemo& memo) const {
   FieldCellLayout& cell = memo.fieldCell;
   if (cell.filled && cell.i == i && cell.j == j) return cell;
@@ -238,16 +170,35 @@ float GroundTexture::field(double u, double v, const std::array<double, 4>& hash
   const double across = alongU ? v : u, along = alongU ? u : v;
   if (period > 0.0) {
     // Rows broken up along their length (plants, clods), so row texture has corners too.
-    const double breaks = 0.5 + fractal(along, across / period, 0.1, 0.8, 0.8, footprint_m, salt_ + kRowBreaks, memo);
+    const double breaks =
+        0.5 + fractal(along, across / period, {0.1, 0.8, 0.8}, footprint_m, salt_ + kRowBreaks, memo.noise);
     grey *= 1.0 + contrast * (2.0 * rows(across, period, footprint_m) - 1.0) * (0.4 + 1.2 * breaks);
   } else {
-    grey *= 1.0 + 0.5 * fractal(u, v, 1.0, 16.0, 0.7, footprint_m, salt_ + kBroad + 7, memo);
+    grey *= 1.0 + 0.5 * fractal(u, v, {1.0, 16.0, 0.7}, footprint_m, salt_ + kBroad + 7, memo.noise);
   }
   return static_cast<float>(grey);
 }
 
 float GroundTexture::ground(double x, double y, double footprint_m) const {
   TextureMemo& memo = threadTextureMemo();
+  return groundAt(x, y, footprint_m, fractal(x, y, kBroadOctaves, footprint_m, salt_ + kBroad, memo.noise),
+                  fractal(x, y, kGrainOctaves, footprint_m, salt_ + kGrain, memo.noise), memo);
+}
+
+void GroundTexture::groundRow(std::int64_t ix, std::int64_t iy, double texel_m, int count, float* out) const {
+  // The broad tone and the grain over the whole row first (value_noise.h's four-point path), then the rest
+  // of each texel.
+  TextureMemo& memo = threadTextureMemo();
+  memo.x.resize(count), memo.broad.resize(count), memo.grain.resize(count);
+  const double y = static_cast<double>(iy) * texel_m;
+  for (int n = 0; n < count; ++n) memo.x[n] = static_cast<double>(ix + n) * texel_m;
+  fractalRow(memo.x.data(), y, count, kBroadOctaves, texel_m, salt_ + kBroad, memo.noise, memo.broad.data());
+  fractalRow(memo.x.data(), y, count, kGrainOctaves, texel_m, salt_ + kGrain, memo.noise, memo.grain.data());
+  for (int n = 0; n < count; ++n) out[n] = groundAt(memo.x[n], y, texel_m, memo.broad[n], memo.grain[n], memo);
+}
+
+float GroundTexture::groundAt(double x, double y, double footprint_m, double broad, double grain,
+                              TextureMemo& memo) const {
   const double size = options_.fieldSize_m;
   const double u = cosGrid_ * x + sinGrid_ * y, v = -sinGrid_ * x + cosGrid_ * y;
   const double fi = std::floor(u / size), fj = std::floor(v / size);
@@ -260,7 +211,7 @@ float GroundTexture::ground(double x, double y, double footprint_m) const {
   const double splitDistance = (splitU ? cu : cv) - splitAt;
   const int half = splitDistance < 0.0 ? 0 : 1;
   double grey = field(u, v, cell.fields[half], footprint_m, memo);
-  grey *= 1.0 + 0.3 * fractal(x, y, 4.0, 64.0, 0.7, footprint_m, salt_ + kBroad, memo);
+  grey *= 1.0 + 0.3 * broad;
 
   // The nearest cell edge in u and in v, each a track, hedge or verge by its own hash.
   auto edgeStrip = [&](double distance, int axis, int end) {
@@ -270,17 +221,20 @@ float GroundTexture::ground(double x, double y, double footprint_m) const {
       const double inside = band(distance, kTrackHalfWidth_m, footprint_m);
       if (inside <= 0.0) return;
       const double ruts = band(std::abs(distance) - kRutOffset_m, kRutHalfWidth_m, footprint_m);
-      const double gravel = 1.0 + 0.6 * fractal(along, distance, 0.02, 0.64, 0.9, footprint_m, salt_ + kTrack, memo);
+      const double gravel =
+          1.0 + 0.6 * fractal(along, distance, {0.02, 0.64, 0.9}, footprint_m, salt_ + kTrack, memo.noise);
       const double track = lerp(lerp(175.0, 205.0, cell.trackTones[axis][end]), 120.0, ruts) * gravel;
       grey = lerp(grey, track, inside);
     } else if (pick < options_.trackProbability + options_.hedgeProbability) {
-      // Hedges are ragged: their half-width wanders along them.
+      // Hedges are ragged: their half-width wanders along them (computed only where it can reach the texel).
+      static const double widest = kHedgeHalfWidth_m * (1.0 + 0.6 * fractalBound(kRaggedOctaves));
+      if (band(distance, widest, footprint_m) <= 0.0) return;
       const double ragged =
-          kHedgeHalfWidth_m * (1.0 + 0.6 * fractal(along, 0.0, 0.5, 4.0, 0.8, 0.0, salt_ + kHedge, memo));
+          kHedgeHalfWidth_m * (1.0 + 0.6 * fractal(along, 0.0, kRaggedOctaves, 0.0, salt_ + kHedge, memo.noise));
       const double inside = band(distance, ragged, footprint_m);
       if (inside <= 0.0) return;
       const double leaves =
-          1.0 + 1.2 * fractal(along, distance, 0.04, 1.28, 0.85, footprint_m, salt_ + kHedge + 1, memo);
+          1.0 + 1.2 * fractal(along, distance, {0.04, 1.28, 0.85}, footprint_m, salt_ + kHedge + 1, memo.noise);
       grey = lerp(grey, 55.0 * leaves, inside);
     } else {
       grey = lerp(grey, 140.0, band(distance, kVergeHalfWidth_m, footprint_m));
@@ -298,12 +252,13 @@ float GroundTexture::ground(double x, double y, double footprint_m) const {
   if (cell.splitHedge < options_.hedgeProbability) {
     const double inside = band(splitDistance, kHedgeHalfWidth_m, footprint_m);
     if (inside > 0.0)
-      grey = lerp(grey, 55.0 * (1.0 + 1.2 * fractal(u, v, 0.04, 1.28, 0.85, footprint_m, salt_ + kHedge + 2, memo)),
+      grey = lerp(grey,
+                  55.0 * (1.0 + 1.2 * fractal(u, v, {0.04, 1.28, 0.85}, footprint_m, salt_ + kHedge + 2, memo.noise)),
                   inside);
   } else {
     grey = lerp(grey, 140.0, band(splitDistance, kVergeHalfWidth_m, footprint_m));
   }
-  return static_cast<float>(std::clamp(grey * grain(x, y, footprint_m, memo), 0.0, 255.0));
+  return static_cast<float>(std::clamp(grey * (1.0 + options_.grainContrast * 2.0 * grain), 0.0, 255.0));
 }
 
 float GroundTexture::tree(const SurfaceHit& hit, double footprint_m) const {
@@ -328,7 +283,16 @@ double GroundTexture::crownShade(const SurfaceHit& hit, double tone) const {
 
 float GroundTexture::crownDetail(double x, double y, double footprint_m) const {
   return static_cast<float>(1.0 +
-                            2.0 * fractal(x, y, 0.02, 2.56, 1.0, footprint_m, salt_ + kCrown, threadTextureMemo()));
+                            2.0 * fractal(x, y, kCrownOctaves, footprint_m, salt_ + kCrown, threadTextureMemo().noise));
+}
+
+void GroundTexture::crownDetailRow(std::int64_t ix, std::int64_t iy, double texel_m, int count, float* out) const {
+  TextureMemo& memo = threadTextureMemo();
+  memo.x.resize(count), memo.grain.resize(count);
+  for (int n = 0; n < count; ++n) memo.x[n] = static_cast<double>(ix + n) * texel_m;
+  fractalRow(memo.x.data(), static_cast<double>(iy) * texel_m, count, kCrownOctaves, texel_m, salt_ + kCrown,
+             memo.noise, memo.grain.data());
+  for (int n = 0; n < count; ++n) out[n] = static_cast<float>(1.0 + 2.0 * memo.grain[n]);
 }
 
 float GroundTexture::building(const SurfaceHit& hit, double footprint_m) const {
@@ -343,7 +307,7 @@ float GroundTexture::building(const SurfaceHit& hit, double footprint_m) const {
   const double rim = band(toEdge, kRoofRim_m, footprint_m);
   const double corrugation = 1.0 + 0.12 * (2.0 * rows(along, 0.4, footprint_m) - 1.0);
   const double weathering =
-      1.0 + 0.3 * fractal(along, across, 0.05, 2.0, 0.8, footprint_m, salt_ + kRoof + 1, threadTextureMemo());
+      1.0 + 0.3 * fractal(along, across, {0.05, 2.0, 0.8}, footprint_m, salt_ + kRoof + 1, threadTextureMemo().noise);
   return static_cast<float>(std::clamp(lerp(tone * corrugation * weathering, 80.0, rim), 0.0, 255.0));
 }
 

@@ -60,7 +60,11 @@ class GroundTexture : public SurfaceTexture {
   // The leafy clumps of every crown, a texture of x and y (cached in crownTexels_).
   float crownDetail(double x, double y, double footprint_m) const;
   float building(const SurfaceHit& hit, double footprint_m) const;
-  double grain(double x, double y, double footprint_m, TextureMemo& memo) const;
+  // ground() with its broad tone and grain noise given (what it sums of those layers at x, y).
+  float groundAt(double x, double y, double footprint_m, double broad, double grain, TextureMemo& memo) const;
+  // ground() and crownDetail() along a row of texels (TexelTiles::RowFunction).
+  void groundRow(std::int64_t ix, std::int64_t iy, double texel_m, int count, float* out) const;
+  void crownDetailRow(std::int64_t ix, std::int64_t iy, double texel_m, int count, float* out) const;
 
   GroundTextureOptions options_;
   std::uint32_t salt_;

@@ -16,6 +16,14 @@ std::size_t TexelTiles::KeyHash::operator()(const Key& k) const {
 }
 
 TexelTiles::TexelTiles(Function function, double baseTexel_m, int keepImages)
+    : TexelTiles(
+          [point = std::move(function)](std::int64_t ix, std::int64_t iy, double s, int count, float* out) {
+            for (int n = 0; n < count; ++n)
+              out[n] = point(static_cast<double>(ix + n) * s, static_cast<double>(iy) * s, s);
+          },
+          baseTexel_m, keepImages) {}
+
+TexelTiles::TexelTiles(RowFunction function, double baseTexel_m, int keepImages)
     : function_(std::move(function)), base_m_(baseTexel_m), keep_(keepImages) {
   if (!(std::isfinite(baseTexel_m) && baseTexel_m > 0.0) || keepImages < 1)
     throw Error("texel tiles: the base texel must be finite and > 0 and keepImages >= 1");
@@ -31,8 +39,9 @@ void TexelTiles::sampleMany(const double* x, const double* y, const float* footp
 }
 
 float TexelTiles::texel(std::int64_t ix, std::int64_t iy, int level) const {
-  const double s = texel_[level];
-  return function_(static_cast<double>(ix) * s, static_cast<double>(iy) * s, s);
+  float value;
+  function_(ix, iy, texel_[level], 1, &value);
+  return value;
 }
 
 namespace {
@@ -68,13 +77,19 @@ void TexelTiles::fill(Tile& tile, const Key& key) const {
       coarser == tiles_.end()
           ? nullptr
           : coarser->second->texels.data() + (key.ty & 1) * (kTile / 2) * (kTile + 1) + (key.tx & 1) * (kTile / 2);
-  for (int v = 0; v < kCoarse; ++v)
-    for (int u = 0; u < kCoarse; ++u)
-      coarse[v * kCoarse + u] = quarter ? quarter[v * (kTile + 1) + u].value : texel(cx0 + u, cy0 + v, key.level + 1);
+  for (int v = 0; v < kCoarse; ++v) {
+    if (quarter == nullptr) {
+      function_(cx0, cy0 + v, texel_[key.level + 1], kCoarse, &coarse[v * kCoarse]);
+      continue;
+    }
+    for (int u = 0; u < kCoarse; ++u) coarse[v * kCoarse + u] = quarter[v * (kTile + 1) + u].value;
+  }
+  std::array<float, kTile + 1> values;
   for (int v = 0; v <= kTile; ++v) {
+    function_(key.tx * kTile, key.ty * kTile + v, texel_[key.level], kTile + 1, values.data());
     for (int u = 0; u <= kTile; ++u) {
       const float* c = &coarse[(v / 2) * kCoarse + u / 2];
-      tile.texels[v * (kTile + 1) + u] = {texel(key.tx * kTile + u, key.ty * kTile + v, key.level),
+      tile.texels[v * (kTile + 1) + u] = {values[u],
                                           coarserAt(u, v, [&](int du, int dv) { return c[dv * kCoarse + du]; })};
     }
   }

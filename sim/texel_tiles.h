@@ -39,9 +39,14 @@ struct TexelRegion {
 class TexelTiles {
  public:
   using Function = std::function<float(double x, double y, double footprint_m)>;
+  // The function along a row of a level's nodes: f((ix + n) s, iy s, s) into out[n] for n = 0 .. count - 1,
+  // the node coordinates computed as static_cast<double>(ix + n) * s and static_cast<double>(iy) * s. A
+  // texture may evaluate a row faster than point by point.
+  using RowFunction = std::function<void(std::int64_t ix, std::int64_t iy, double texel_m, int count, float* out)>;
 
   // Throws lrsvo::Error on a non-positive base texel or keepImages < 1.
   TexelTiles(Function function, double baseTexel_m, int keepImages = 8);
+  TexelTiles(RowFunction function, double baseTexel_m, int keepImages = 8);
 
   // Fills every tile that samples inside the regions will read, in parallel
   // when threads > 1 (sim/pool_for.h; `function` is called from every
@@ -107,7 +112,7 @@ class TexelTiles {
   // the grids do not hold, a footprint below the base texel.
   bool locateFourAvx2(const double* x, const double* y, const float* footprints_m, FourTexels& found) const;
 
-  Function function_;
+  RowFunction function_;
   double base_m_;
   double texel_[kLevels];         // spacing per level
   double inverseTexel_[kLevels];  // 1 / spacing: texel indices use this alone, wherever computed
