@@ -131,8 +131,8 @@ void GroundTexture::greyRow(const RowHits& row, float* out) const {
 }
 
 void GroundTexture::prepare(const SurfaceRegions& seen, int threads) const {
-  groundTexels_.require(seen.ground, threads);
-  crownTexels_.require(seen.crowns, threads);
+  groundTexels_.require(seen.ground, threads, seen.rowDirection);
+  crownTexels_.require(seen.crowns, threads, seen.rowDirection);
 }
 
 const FieldCellLayout& GroundTexture::fieldCell(std::int64_t i, std::int64_t j, TextureMemo& memo) const {

@@ -59,6 +59,7 @@ inline float RowHits::footprintAt(int i) const {
 // (SurfaceView::regions()): the ground, and the tree crowns in view.
 struct SurfaceRegions {
   std::vector<TexelRegion> ground, crowns;
+  Eigen::Vector2d rowDirection = Eigen::Vector2d::UnitX();  // world (x, y) along which the image's rows run
 };
 
 // The grey level (albedo, 0..255) of the surface at a hit, averaged over a

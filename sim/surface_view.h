@@ -53,7 +53,7 @@ class SurfaceView {
   // One region per tree crown in view: the box of its crown, and the
   // footprints any point of the crown's bounding box can have from here.
   const std::vector<TexelRegion>& crownRegions() const { return crownRegions_; }
-  SurfaceRegions regions() const { return {groundRegions(), crownRegions_}; }
+  SurfaceRegions regions() const { return {groundRegions(), crownRegions_, worldFromCameraRotation_.col(0).head<2>()}; }
 
  private:
   static constexpr int kTile_px = 32;  // obstacles are listed per square tile of the image

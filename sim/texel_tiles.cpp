@@ -73,26 +73,35 @@ void TexelTiles::fill(Tile& tile, const Key& key) const {
   std::array<float, kCoarse * kCoarse> coarse;
   const std::int64_t cx0 = key.tx * kTile / 2, cy0 = key.ty * kTile / 2;
   const auto coarser = tiles_.find(Key{key.tx >> 1, key.ty >> 1, key.level + 1});
-  const TexelPair* quarter =
-      coarser == tiles_.end()
-          ? nullptr
-          : coarser->second->texels.data() + (key.ty & 1) * (kTile / 2) * (kTile + 1) + (key.tx & 1) * (kTile / 2);
+  const TexelPair* quarter = nullptr;
+  Layout coarseLayout;
+  if (coarser != tiles_.end()) {
+    coarseLayout = layoutOf(coarser->second->alongY);
+    quarter = coarser->second->texels.data() + coarseLayout.at((key.tx & 1) * (kTile / 2), (key.ty & 1) * (kTile / 2));
+  }
   for (int v = 0; v < kCoarse; ++v) {
     if (quarter == nullptr) {
       function_(cx0, cy0 + v, texel_[key.level + 1], kCoarse, &coarse[v * kCoarse]);
       continue;
     }
-    for (int u = 0; u < kCoarse; ++u) coarse[v * kCoarse + u] = quarter[v * (kTile + 1) + u].value;
+    for (int u = 0; u < kCoarse; ++u) coarse[v * kCoarse + u] = quarter[coarseLayout.at(u, v)].value;
   }
   std::array<float, kTile + 1> values;
+  tile.alongY = alongY_;
   for (int v = 0; v <= kTile; ++v) {
     function_(key.tx * kTile, key.ty * kTile + v, texel_[key.level], kTile + 1, values.data());
     for (int u = 0; u <= kTile; ++u) {
       const float* c = &coarse[(v / 2) * kCoarse + u / 2];
-      tile.texels[v * (kTile + 1) + u] = {values[u],
-                                          coarserAt(u, v, [&](int du, int dv) { return c[dv * kCoarse + du]; })};
+      tile.texels[layout_.at(u, v)] = {values[u],
+                                       coarserAt(u, v, [&](int du, int dv) { return c[dv * kCoarse + du]; })};
     }
   }
+}
+
+void TexelTiles::transpose(Tile& tile) {
+  for (int v = 0; v <= kTile; ++v)
+    for (int u = v + 1; u <= kTile; ++u) std::swap(tile.texels[v * (kTile + 1) + u], tile.texels[u * (kTile + 1) + v]);
+  tile.alongY = !tile.alongY;
 }
 
 std::vector<TexelTiles::TileRange> TexelTiles::tileRanges(const std::vector<TexelRegion>& regions) const {
@@ -118,7 +127,11 @@ std::vector<TexelTiles::TileRange> TexelTiles::tileRanges(const std::vector<Texe
   return ranges;
 }
 
-void TexelTiles::require(const std::vector<TexelRegion>& regions, int threads) {
+void TexelTiles::require(const std::vector<TexelRegion>& regions, int threads, const Eigen::Vector2d& rowDirection) {
+  constexpr double kSwitch = 1.2;  // tan(50 deg)
+  const double along = std::abs(alongY_ ? rowDirection.y() : rowDirection.x());
+  const double across = std::abs(alongY_ ? rowDirection.x() : rowDirection.y());
+  if (across > kSwitch * along) alongY_ = !alongY_, layout_ = layoutOf(alongY_);
   ++images_;
   layOut(tileRanges(regions));
   // Find or make every tile the grids list; fill the new ones on all threads.
@@ -135,6 +148,8 @@ void TexelTiles::require(const std::vector<TexelRegion>& regions, int threads) {
           found = tiles_.emplace(key, std::make_unique<Tile>()).first;
           found->second->texels.resize((kTile + 1) * (kTile + 1));  // filled below; the grid points at its data
           missing.emplace_back(key, found->second.get());
+        } else if (found->second->alongY != alongY_) {
+          transpose(*found->second);  // this image reads its tiles in the current layout
         }
         found->second->lastUsed = images_;
         slot = found->second->texels.data();

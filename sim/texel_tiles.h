@@ -51,8 +51,15 @@ class TexelTiles {
   // Fills every tile that samples inside the regions will read, in parallel
   // when threads > 1 (sim/pool_for.h; `function` is called from every
   // thread); tiles no image has read for keepImages calls are dropped. Not
-  // safe while another thread samples.
-  void require(const std::vector<TexelRegion>& regions, int threads);
+  // safe while another thread samples. rowDirection is the world direction
+  // (x, y) in which the image's rows run: the tiles are laid out so that
+  // texels along the nearer world axis are neighbours in memory, so that a
+  // row of pixels reads along cache lines whatever the camera's heading
+  // (the layout switches past about 50 degrees, not at 45, so that a heading
+  // near the diagonal does not switch it back and forth). Values do not
+  // depend on the layout.
+  void require(const std::vector<TexelRegion>& regions, int threads,
+               const Eigen::Vector2d& rowDirection = Eigen::Vector2d::UnitX());
   // The texture at (x, y) for a pixel footprint. Safe on many threads at once.
   float sample(double x, double y, double footprint_m) const;
   // sample() at `count` points into out[0 ..], the same values bit for bit:
@@ -60,6 +67,8 @@ class TexelTiles {
   void sampleMany(const double* x, const double* y, const float* footprints_m, int count, float* out) const;
   // Whether sampleMany() runs its AVX2 path on this CPU.
   static bool simd();
+  // Whether the tiles the last require() listed lie with texels along y side by side (else along x).
+  bool tilesAlongY() const { return alongY_; }
 
  private:
   static constexpr int kLevels = 32;  // up to 2^31 base texels: far coarser than any footprint
@@ -78,9 +87,16 @@ class TexelTiles {
     std::size_t operator()(const Key& k) const;
   };
   struct Tile {
-    std::vector<TexelPair> texels;  // (kTile + 1)^2, row-major in y
+    std::vector<TexelPair> texels;  // (kTile + 1)^2, rows along x one after another, or columns if alongY
     std::int64_t lastUsed = 0;
+    bool alongY = false;
   };
+  // Where in a tile's texels node (u, v) of the tile lies: steps of one node along x and along y.
+  struct Layout {
+    int xStep = 1, yStep = kTile + 1;
+    int at(std::int64_t u, std::int64_t v) const { return static_cast<int>(u * xStep + v * yStep); }
+  };
+  static Layout layoutOf(bool alongY) { return alongY ? Layout{kTile + 1, 1} : Layout{1, kTile + 1}; }
   // The texels of the tiles of one level that the last require() listed,
   // over the bounding box of their indices (null where none was listed).
   struct LevelGrid {
@@ -100,7 +116,8 @@ class TexelTiles {
   // The pair at a lattice point, uncached; `coarser` from the next level's nodes (c00 c10 c01 c11
   // around it: only those its position needs are read), as fill() computes it.
   TexelPair texelPair(std::int64_t ix, std::int64_t iy, int level) const;
-  void fill(Tile& tile, const Key& key) const;  // a new tile's pairs
+  void fill(Tile& tile, const Key& key) const;  // a new tile's pairs, in the current layout
+  static void transpose(Tile& tile);            // to the other layout
   std::vector<TileRange> tileRanges(const std::vector<TexelRegion>& regions) const;
   void layOut(const std::vector<TileRange>& ranges);
   // sampleMany() with AVX2 (sim/texel_tiles_avx2.cpp): sample()'s operations in the same order, four points at
@@ -120,6 +137,8 @@ class TexelTiles {
   std::int64_t images_ = 0;  // require() calls
   std::unordered_map<Key, std::unique_ptr<Tile>, KeyHash> tiles_;
   std::array<LevelGrid, kLevels> grids_;
+  bool alongY_ = false;  // the layout of every tile the grids list
+  Layout layout_;        // layoutOf(alongY_)
 };
 
 // The per-pixel path, inline: the renderer calls sample() for every ground pixel.
@@ -161,8 +180,8 @@ inline float TexelTiles::sample(double x, double y, double footprint_m) const {
                                 : nullptr;
   TexelPair t00, t10, t01, t11;
   if (texels != nullptr) [[likely]] {
-    const TexelPair* t = texels + (iy - (ty << kTileBits)) * (kTile + 1) + (ix - (tx << kTileBits));
-    t00 = t[0], t10 = t[1], t01 = t[kTile + 1], t11 = t[kTile + 2];
+    const TexelPair* t = texels + layout_.at(ix - (tx << kTileBits), iy - (ty << kTileBits));
+    t00 = t[0], t10 = t[layout_.xStep], t01 = t[layout_.yStep], t11 = t[layout_.xStep + layout_.yStep];
   } else {
     t00 = texelPair(ix, iy, level), t10 = texelPair(ix + 1, iy, level);
     t01 = texelPair(ix, iy + 1, level), t11 = texelPair(ix + 1, iy + 1, level);

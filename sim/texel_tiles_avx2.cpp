@@ -84,7 +84,8 @@ LRSVO_AVX2 bool TexelTiles::locateFourAvx2(const double* x, const double* y, con
                   _mm_add_epi32(_mm_mullo_epi32(row, _mm_set1_epi32(static_cast<int>(grid.width))), column));
   const __m128i u = _mm_sub_epi32(ix, _mm_slli_epi32(tx, kTileBits)),
                 v = _mm_sub_epi32(iy, _mm_slli_epi32(ty, kTileBits));
-  _mm_store_si128(reinterpret_cast<__m128i*>(offset), _mm_add_epi32(_mm_mullo_epi32(v, _mm_set1_epi32(kTile + 1)), u));
+  _mm_store_si128(reinterpret_cast<__m128i*>(offset), _mm_add_epi32(_mm_mullo_epi32(u, _mm_set1_epi32(layout_.xStep)),
+                                                                    _mm_mullo_epi32(v, _mm_set1_epi32(layout_.yStep))));
   for (int i = 0; i < 4; ++i) {
     const TexelPair* tile = grid.texels[slot[i]];
     if (tile == nullptr) return false;
@@ -96,13 +97,18 @@ LRSVO_AVX2 bool TexelTiles::locateFourAvx2(const double* x, const double* y, con
 
 namespace {
 
-// The texel rows of four located points blended into their four samples.
-LRSVO_AVX2 void blendFour(const __m256d fraction, const __m256d a, const __m256d b, __m128 upper[4], __m128 lower[4],
-                          float* out) {
-  _MM_TRANSPOSE4_PS(upper[0], upper[1], upper[2], upper[3]);  // t00 values, t00 coarser, t10 values, t10 coarser
-  _MM_TRANSPOSE4_PS(lower[0], lower[1], lower[2], lower[3]);  // the same for t01, t11
-  const __m256d fine = bilinearOfFour(a, b, upper[0], upper[2], lower[0], lower[2]);
-  const __m256d coarse = bilinearOfFour(a, b, upper[1], upper[3], lower[1], lower[3]);
+// Four located points blended into their four samples from the two rows of
+// pairs each one reads (t00 and the pair after it, and the two a tile row
+// of memory on): [t00 t10] and [t01 t11] in tiles laid out along x,
+// [t00 t01] and [t10 t11] along y.
+LRSVO_AVX2 void blendFour(const __m256d fraction, const __m256d a, const __m256d b, __m128 nearPairs[4],
+                          __m128 farPairs[4], bool alongY, float* out) {
+  _MM_TRANSPOSE4_PS(nearPairs[0], nearPairs[1], nearPairs[2], nearPairs[3]);  // t00 values, coarser; the next's
+  _MM_TRANSPOSE4_PS(farPairs[0], farPairs[1], farPairs[2], farPairs[3]);      // the same a tile row on
+  const __m128 t10 = alongY ? farPairs[0] : nearPairs[2], t10Coarser = alongY ? farPairs[1] : nearPairs[3];
+  const __m128 t01 = alongY ? nearPairs[2] : farPairs[0], t01Coarser = alongY ? nearPairs[3] : farPairs[1];
+  const __m256d fine = bilinearOfFour(a, b, nearPairs[0], t10, t01, farPairs[2]);
+  const __m256d coarse = bilinearOfFour(a, b, nearPairs[1], t10Coarser, t01Coarser, farPairs[3]);
   const __m256d blended =
       _mm256_add_pd(_mm256_mul_pd(_mm256_sub_pd(_mm256_set1_pd(1.0), fraction), fine), _mm256_mul_pd(fraction, coarse));
   _mm_storeu_ps(out, _mm256_cvtpd_ps(blended));
@@ -126,15 +132,15 @@ LRSVO_AVX2 void TexelTiles::sampleManyAvx2(const double* x, const double* y, con
     if (step >= kAhead) {
       const int first = 4 * (step - kAhead);
       if (located[slot]) {
-        // Per point, its row of pairs (t00 and t10 side by side) and the row below: [value, coarser] x 2
-        // each. The loads themselves are scalar: on AMD's cores a gather costs more than its loads.
+        // Per point, its pair t00 and the next in memory, and the two a tile row of memory on: [value,
+        // coarser] x 2 each. The loads themselves are scalar: on AMD's cores a gather costs more than its loads.
         const FourTexels& four = ahead[slot];
-        __m128 upper[4], lower[4];
+        __m128 nearPairs[4], farPairs[4];
         for (int i = 0; i < 4; ++i) {
-          upper[i] = _mm_loadu_ps(&four.texels[i]->value);
-          lower[i] = _mm_loadu_ps(&four.texels[i][kTile + 1].value);
+          nearPairs[i] = _mm_loadu_ps(&four.texels[i]->value);
+          farPairs[i] = _mm_loadu_ps(&four.texels[i][kTile + 1].value);
         }
-        blendFour(four.fraction, four.a, four.b, upper, lower, out + first);
+        blendFour(four.fraction, four.a, four.b, nearPairs, farPairs, alongY_, out + first);
       } else {
         for (int i = first; i < first + 4; ++i) out[i] = sample(x[i], y[i], footprints_m[i]);
       }

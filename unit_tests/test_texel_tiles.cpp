@@ -4,7 +4,9 @@
 #include <cstdint>
 #include <iostream>
 #include <limits>
+#include <numbers>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -82,16 +84,66 @@ TEST(TexelTiles, SamplesOutsideTheRequiredTilesHaveTheCachedValue) {
   }
 }
 
+// The tiles' layout in memory (texels along x or along y side by side) is
+// the renderer's choice for speed: samples are the same bit for bit in
+// either, after tiles are transposed from one to the other, and where a new
+// tile of one layout takes its coarser nodes from a cached tile of the other.
+TEST(TexelTiles, SamplesDoNotDependOnTheLayout) {
+  auto wavy = [](double x, double y, double footprint_m) {
+    return static_cast<float>(std::sin(7.0 * x) * std::cos(5.0 * y) + 10.0 * footprint_m);
+  };
+  const Eigen::AlignedBox2d area(Eigen::Vector2d(-1.3, -0.4), Eigen::Vector2d(0.9, 1.7));
+  const TexelRegion fine{area, 0.011f, 0.019f}, coarse{area, 0.021f, 0.039f};  // levels 0 and 1
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> x(-1.3, 0.9), y(-0.4, 1.7), footprint(0.011, 0.019);
+  std::vector<Eigen::Vector3d> points(3000);
+  for (Eigen::Vector3d& p : points) p = Eigen::Vector3d(x(rng), y(rng), footprint(rng));
+  auto samples = [&](const TexelTiles& tiles) {
+    std::vector<float> values;
+    for (const Eigen::Vector3d& p : points) values.push_back(tiles.sample(p.x(), p.y(), p.z()));
+    return values;
+  };
+  TexelTiles alongX(wavy, kBase_m), mixed(wavy, kBase_m), switched(wavy, kBase_m);
+  alongX.require({coarse}, 2, Eigen::Vector2d(1.0, 0.2));
+  alongX.require({fine}, 2, Eigen::Vector2d(1.0, 0.2));
+  const std::vector<float> reference = samples(alongX);
+  // Level 1 cached along x and not listed again; level 0 made along y, from level 1's nodes.
+  mixed.require({coarse}, 2, Eigen::Vector2d(1.0, 0.2));
+  mixed.require({fine}, 2, Eigen::Vector2d(0.3, -1.0));
+  // Both levels made along x, then listed for an image whose rows run along y: transposed.
+  switched.require({coarse, fine}, 2, Eigen::Vector2d(1.0, 0.0));
+  switched.require({coarse, fine}, 2, Eigen::Vector2d(0.0, 1.0));
+  for (const TexelTiles* tiles : {&mixed, &switched}) {
+    const std::vector<float> values = samples(*tiles);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(values[i]), std::bit_cast<std::uint32_t>(reference[i])) << "point " << i;
+  }
+  // A heading just past the diagonal keeps the layout (no switching back and forth); well past it switches.
+  const std::pair<double, bool> headings[] = {{10.0, false}, {46.0, false}, {48.0, false}, {52.0, true},
+                                              {44.0, true},  {42.0, true},  {38.0, false}, {-95.0, true}};
+  for (const auto& [heading_deg, alongY] : headings) {
+    const double a = heading_deg * std::numbers::pi / 180.0;
+    switched.require({fine}, 2, Eigen::Vector2d(std::cos(a), std::sin(a)));
+    EXPECT_EQ(switched.tilesAlongY(), alongY) << "at heading " << heading_deg;
+    const std::vector<float> values = samples(switched);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(values[i]), std::bit_cast<std::uint32_t>(reference[i]))
+          << "point " << i << " at heading " << heading_deg;
+  }
+}
+
 // sampleMany() gives sample()'s values bit for bit: runs of neighbouring
 // pixels (the renderer's case, mostly four at one level), runs crossing a
 // level or a tile, points outside the listed tiles, footprints finer than the
-// base texel or beyond the coarsest level, and lengths that leave a remainder.
-TEST(TexelTiles, SampleManyGivesSampleBitForBit) {
+// base texel or beyond the coarsest level, and lengths that leave a remainder;
+// with the tiles laid out along x and along y.
+void checkSampleManyGivesSample(const Eigen::Vector2d& rowDirection) {
   auto wavy = [](double x, double y, double footprint_m) {
     return static_cast<float>(std::sin(7.0 * x) * std::cos(5.0 * y) + 10.0 * footprint_m);
   };
   TexelTiles tiles(wavy, kBase_m);
-  tiles.require({{Eigen::AlignedBox2d(Eigen::Vector2d(-2.0, -1.0), Eigen::Vector2d(1.0, 2.0)), 0.004f, 0.2f}}, 2);
+  tiles.require({{Eigen::AlignedBox2d(Eigen::Vector2d(-2.0, -1.0), Eigen::Vector2d(1.0, 2.0)), 0.004f, 0.2f}}, 2,
+                rowDirection);
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> start(-2.5, 1.5), step(-0.03, 0.03), logFootprint(-6.0, -1.5);
   std::vector<double> x, y;
@@ -122,6 +174,13 @@ TEST(TexelTiles, SampleManyGivesSampleBitForBit) {
       ASSERT_EQ(std::bit_cast<std::uint32_t>(part[i]), std::bit_cast<std::uint32_t>(many[7 + i]))
           << "point " << i << " of " << length;
     EXPECT_EQ(part[length], -1.0f) << "written past " << length << " points";
+  }
+}
+
+TEST(TexelTiles, SampleManyGivesSampleBitForBit) {
+  for (const Eigen::Vector2d& rows : {Eigen::Vector2d(1.0, 0.0), Eigen::Vector2d(0.0, 1.0)}) {
+    SCOPED_TRACE(rows.x() == 1.0 ? "tiles along x" : "tiles along y");
+    checkSampleManyGivesSample(rows);
   }
 }
 
