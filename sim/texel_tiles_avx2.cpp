@@ -1,22 +1,13 @@
-// TexelTiles' four-point path. Built for any x86-64 (the library is not
-// compiled for AVX2), its functions ask for AVX2 alone and run only where
-// simd() found it at run time. Without FMA the compiler cannot fuse a
-// multiply and an add, so every operation rounds as the scalar path's does.
+// TexelTiles' four-point path (sim/cpu_features.h): every operation the
+// scalar sample() makes, in its order, four points at a time.
+#include "sim/cpu_features.h"
 #include "sim/texel_tiles.h"
-
-#if defined(__x86_64__) && defined(__GNUC__)
-#include <immintrin.h>
-#define LRSVO_AVX2 __attribute__((target("avx2")))
-#endif
 
 namespace lrsvo {
 
-#ifdef LRSVO_AVX2
+bool TexelTiles::simd() { return cpuHasAvx2(); }
 
-bool TexelTiles::simd() {
-  static const bool hasAvx2 = __builtin_cpu_supports("avx2");
-  return hasAvx2;
-}
+#ifdef LRSVO_AVX2
 
 namespace {
 
@@ -160,7 +151,6 @@ LRSVO_AVX2 void TexelTiles::sampleManyAvx2(const double* x, const double* y, con
 
 #else
 
-bool TexelTiles::simd() { return false; }
 void TexelTiles::sampleManyAvx2(const double* x, const double* y, const float* footprints_m, int count,
                                 float* out) const {
   for (int i = 0; i < count; ++i) out[i] = sample(x[i], y[i], footprints_m[i]);

@@ -9,26 +9,18 @@
 
 namespace lrsvo {
 
+namespace {
+
+// Smooth value noise of unit wavelength in [-0.5, 0.5) at (x, y), its cell's corners kept in `cell`
+// (fractalRowAvx2() makes the same operations four points at a time).
 double valueNoise(double x, double y, std::uint32_t salt, LatticeCell& cell) {
   const std::int64_t ix = floorIndex(x), iy = floorIndex(y);
-  if (!cell.filled || cell.ix != ix || cell.iy != iy || cell.salt != salt) {
-    const std::uint64_t row0 = rowHash(iy, salt), row1 = rowHash(iy + 1, salt);
-    cell = {true,
-            salt,
-            ix,
-            iy,
-            pointHash01(ix, row0),
-            pointHash01(ix + 1, row0),
-            pointHash01(ix, row1),
-            pointHash01(ix + 1, row1)};
-  }
+  cell.moveTo(ix, iy, salt);
   const double tx = x - static_cast<double>(ix), ty = y - static_cast<double>(iy);
   const double sx = tx * tx * (3.0 - 2.0 * tx), sy = ty * ty * (3.0 - 2.0 * ty);
   const double a = cell.a, b = cell.b, c = cell.c, d = cell.d;
   return a + (b - a) * sx + (c - a) * sy + (a - b - c + d) * sx * sy - 0.5;
 }
-
-namespace {
 
 // Calls term(inverse wavelength, weight times amplitude, noise salt, memo cell) for each octave fractal() sums,
 // in its order (octaves faded out entirely are skipped), and returns what the sum is divided by.

@@ -27,12 +27,26 @@ inline double pointHash01(std::int64_t x, std::uint64_t row) {
 }
 inline double hash01(std::int64_t x, std::int64_t y, std::uint32_t salt) { return pointHash01(x, rowHash(y, salt)); }
 
-// The corner hashes of one lattice cell of one noise layer, as valueNoise() last used them.
+// The corner hashes of one lattice cell of one noise layer, as the noise last used them.
 struct LatticeCell {
   bool filled = false;
   std::uint32_t salt = 0;
   std::int64_t ix = 0, iy = 0;
-  double a = 0.0, b = 0.0, c = 0.0, d = 0.0;
+  double a = 0.0, b = 0.0, c = 0.0, d = 0.0;  // at (ix, iy), (ix + 1, iy), (ix, iy + 1), (ix + 1, iy + 1)
+
+  // Holds cell (x, y) of layer `layer` from now on: its corners hashed unless it already does.
+  void moveTo(std::int64_t x, std::int64_t y, std::uint32_t layer) {
+    if (filled && ix == x && iy == y && salt == layer) return;
+    const std::uint64_t row0 = rowHash(y, layer), row1 = rowHash(y + 1, layer);
+    *this = {true,
+             layer,
+             x,
+             y,
+             pointHash01(x, row0),
+             pointHash01(x + 1, row0),
+             pointHash01(x, row1),
+             pointHash01(x + 1, row1)};
+  }
 };
 
 // The last lattice cell of each noise layer and octave. A texture is
@@ -46,9 +60,6 @@ struct NoiseMemo {
     return cells[((salt << kOctaveBits) + octave) & (cells.size() - 1)];
   }
 };
-
-// Smooth value noise of unit wavelength in [-0.5, 0.5) at (x, y), its cell's corners kept in `cell`.
-double valueNoise(double x, double y, std::uint32_t salt, LatticeCell& cell);
 
 // The octaves of a fractal(): wavelengths from lambdaMax down to lambdaMin
 // (halving), each `roughness` times the amplitude of the one above.

@@ -44,18 +44,7 @@ LRSVO_AVX2 void fractalRowAvx2(const double* x, double y, int count, const Fract
       _mm256_store_pd(cellX, fx);
       LatticeCell& cell = *term.cell;
       for (int lane = 0; lane < 4; ++lane) {
-        const auto ix = static_cast<std::int64_t>(cellX[lane]);
-        if (!cell.filled || cell.ix != ix || cell.iy != rows[k] || cell.salt != term.salt) {
-          const std::uint64_t row0 = rowHash(rows[k], term.salt), row1 = rowHash(rows[k] + 1, term.salt);
-          cell = {true,
-                  term.salt,
-                  ix,
-                  rows[k],
-                  pointHash01(ix, row0),
-                  pointHash01(ix + 1, row0),
-                  pointHash01(ix, row1),
-                  pointHash01(ix + 1, row1)};
-        }
+        cell.moveTo(static_cast<std::int64_t>(cellX[lane]), rows[k], term.salt);
         a[lane] = cell.a, b[lane] = cell.b, c[lane] = cell.c, d[lane] = cell.d;
       }
       const __m256d ca = _mm256_load_pd(a), cb = _mm256_load_pd(b), cc = _mm256_load_pd(c), cd = _mm256_load_pd(d);
