@@ -40,6 +40,14 @@ double residentMiB() {
   return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
 }
 
+// The most resident memory this process has held so far, in MiB (VmHWM in /proc/self/status; 0 if absent).
+double peakResidentMiB() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.starts_with("VmHWM:")) return std::stod(line.substr(6)) / 1024.0;  // kB
+  return 0.0;
+}
+
 // `render`: a sim: source's renderer time by stage, or null for other sources.
 void printStages(const RunTotals& t, const RenderTimes* render) {
   const double n = std::max(1, t.frames);
@@ -108,8 +116,8 @@ void benchRun(BenchRunOptions o) {
       RunTotals totals = pipeline.totals();
       totals.sourceSeconds += sourceSeconds;
       std::fprintf(stderr, "\n");
-      std::printf("\nafter %d frames: resident memory %.1f MiB, %d tracked, %d keyframes\n", frame, residentMiB(),
-                  totals.tracked, totals.keyframes);
+      std::printf("\nafter %d frames: resident memory %.1f MiB (peak so far %.1f MiB), %d tracked, %d keyframes\n",
+                  frame, residentMiB(), peakResidentMiB(), totals.tracked, totals.keyframes);
       const auto* sim = dynamic_cast<const SimFrameSource*>(source.get());
       printStages(totals, sim ? &sim->renderTimes() : nullptr);
       ++next;
