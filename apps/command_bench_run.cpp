@@ -86,13 +86,13 @@ void benchRun(BenchRunOptions o) {
   const int frameCount = flight ? static_cast<int>(flight->frames.size()) : source->frameCount();
   const int last = o.checkpoints.back();
   if (frameCount >= 0 && frameCount < last)
-    throw Error("bench run: " + name + " has " + std::to_string(frameCount) + " frames, fewer than the last checkpoint " +
-                std::to_string(last));
+    throw Error("bench run: " + name + " has " + std::to_string(frameCount) +
+                " frames, fewer than the last checkpoint " + std::to_string(last));
   const RunOptions options = o.settings.runOptions();
   const Rig& rig = flight ? flight->rig : source->rig();
-  OdometryPipeline pipeline = flight ? OdometryPipeline(rig, std::vector<LensDistortion>(rig.cameras.size()),
-                                                        flight->truth, options)
-                                     : OdometryPipeline(*source, options);
+  OdometryPipeline pipeline =
+      flight ? OdometryPipeline(rig, std::vector<LensDistortion>(rig.cameras.size()), flight->truth, options)
+             : OdometryPipeline(*source, options);
   const Camera& camera = rig.cameras[0];
   std::printf("lrsvo bench run: %s, %dx%d, window %d, S %s; memory and speed at frames", name.c_str(), camera.width,
               camera.height, options.odometry.windowSize, extrinsicModeName(options.odometry.extrinsicMode));

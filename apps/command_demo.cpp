@@ -96,7 +96,8 @@ void runDemo(const DemoOptions& o) {
   }
   std::printf(
       "\ndrift: KITTI-style mean translational error over 100-800 m segments (shorter runs: the segments that fit); "
-      "scale: size against the truth (Sim3 alignment); final: last position, start-aligned; fps: the odometry alone.\n");
+      "scale: size against the truth (Sim3 alignment); final: last position, start-aligned; fps: the odometry "
+      "alone.\n");
   for (const std::string& note : notes) std::printf("  %s\n", note.c_str());
   std::printf("Outputs in %s/{constrained,unconstrained,rigid}/\n", o.out.c_str());
 }

@@ -12,9 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.h"
-#include "frontend/pose_file.h"
 #include "eval/trajectory_metrics.h"
 #include "eval/trajectory_plots.h"
+#include "frontend/pose_file.h"
 #include "graph/error.h"
 
 namespace lrsvo::cli {

@@ -36,8 +36,8 @@ class LogBarrier : public ConstraintMethod {
     if (round_ == 0) enforceStart(true);
     for (const Bounds::Bound& bound : bounds_.all()) {
       if (bound.vertex->fixed()) continue;
-      edges_.push_back(graph.addEdge(std::make_unique<BarrierEdge>(bound.vertex, bound.index, bound.lower,
-                                                                   bound.upper, mu_)));
+      edges_.push_back(
+          graph.addEdge(std::make_unique<BarrierEdge>(bound.vertex, bound.index, bound.lower, bound.upper, mu_)));
     }
   }
 

@@ -5,9 +5,9 @@
 namespace lrsvo {
 
 void EdgeProjectSecondary::computeResidual(Residual& residual) const {
-  residual = projectSecondary(*vertexAs<0>(), vertexAs<1>()->estimate(), *vertexAs<2>(), 1.0, camera_.intrinsics,
-                              nullptr) -
-             measurement_;
+  residual =
+      projectSecondary(*vertexAs<0>(), vertexAs<1>()->estimate(), *vertexAs<2>(), 1.0, camera_.intrinsics, nullptr) -
+      measurement_;
 }
 
 void EdgeProjectSecondary::computeJacobians() {

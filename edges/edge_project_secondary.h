@@ -31,8 +31,7 @@ class EdgeProjectSecondary : public BaseEdge<2, VertexPose, VertexPoint3, Vertex
 
 // The same with the scale kappa of a monocular start as a fourth vertex:
 // x = pi(K_k R_s (R X + t - c / kappa)) (method.md, long-range initialisation).
-class EdgeProjectSecondaryScaled
-    : public BaseEdge<2, VertexPose, VertexPoint3, VertexStereoExtrinsic, VertexScale> {
+class EdgeProjectSecondaryScaled : public BaseEdge<2, VertexPose, VertexPoint3, VertexStereoExtrinsic, VertexScale> {
  public:
   static constexpr const char* kTypeTag = "PROJECT_SECONDARY_SCALED";
   EdgeProjectSecondaryScaled() = default;

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "frontend/pose_file.h"
 #include "frontend/frame_estimate.h"
 #include "frontend/frame_source.h"
 #include "frontend/image_front_end.h"
 #include "frontend/odometry_options.h"
+#include "frontend/pose_file.h"
 
 namespace lrsvo {
 

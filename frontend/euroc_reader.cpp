@@ -7,8 +7,8 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "frontend/rig_extrinsic.h"
 #include "frontend/pose_file.h"
+#include "frontend/rig_extrinsic.h"
 #include "graph/error.h"
 
 namespace lrsvo {

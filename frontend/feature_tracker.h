@@ -31,7 +31,7 @@ struct FeatureTrackerOptions {
 struct Track {
   int id = -1;
   cv::Point2f pixel;
-  int age = 0;         // frames since it was detected (0 = new this frame)
+  int age = 0;  // frames since it was detected (0 = new this frame)
   // How far it moved from the previous frame (zero when new). The next frame
   // looks for it there first: periodic texture (crop rows) makes KLT from
   // zero motion lock onto the wrong row once the flow nears a row period, and

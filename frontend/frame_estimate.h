@@ -31,9 +31,9 @@ struct FrameEstimate {
   int observations = 0;   // base-camera features of the frame
   int mappedMatches = 0;  // ... of tracks with a point
   int poseInliers = 0;
-  int mapPoints = 0;               // points in the window after this frame
-  int windowFrames = 0;            // keyframes in the window
-  double windowRmsError_px = 0.0;  // after the window adjustment (keyframes only)
+  int mapPoints = 0;                 // points in the window after this frame
+  int windowFrames = 0;              // keyframes in the window
+  double windowRmsError_px = 0.0;    // after the window adjustment (keyframes only)
   double outlierThreshold_px = 0.0;  // the window's outlier threshold then (keyframes only)
   int bundleIterations = 0;
   StageTimes times;

@@ -42,7 +42,7 @@ struct MonocularResult {
   bool success = false;
   std::string failure;  // why not, when !success
   SparseMap map;  // every frame on success (empty otherwise); world = the first camera, |C_1 - C_0| = initialBaseline
-  SolverSummary summary;  // the last bundle adjustment
+  SolverSummary summary;                 // the last bundle adjustment
   double rmsReprojectionError_px = 0.0;  // per image coordinate, after the last bundle adjustment
 };
 

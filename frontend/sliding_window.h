@@ -23,9 +23,9 @@ struct Keyframe {
 
 struct WindowAdjustment {
   SolverSummary summary;
-  double rmsError_px = 0.0;         // per image coordinate, before outliers are removed
+  double rmsError_px = 0.0;          // per image coordinate, before outliers are removed
   double outlierThreshold_px = 0.0;  // the base camera's reprojection error above which observations were removed
-  std::vector<int> rejectedTracks;  // tracks removed for a base-camera outlier
+  std::vector<int> rejectedTracks;   // tracks removed for a base-camera outlier
   int removedObservations = 0;
 };
 

@@ -76,8 +76,8 @@ class GaussNewton : public OptimizationAlgorithm {
   }
 };
 
-const Registrar<OptimizationAlgorithm> kRegistrar("gn", [] { return std::make_unique<GaussNewton>(); },
-                                                  "Gauss-Newton with step halving");
+const Registrar<OptimizationAlgorithm> kRegistrar(
+    "gn", [] { return std::make_unique<GaussNewton>(); }, "Gauss-Newton with step halving");
 
 }  // namespace
 }  // namespace lrsvo

@@ -99,8 +99,9 @@ class LevenbergMarquardt : public OptimizationAlgorithm {
   }
 };
 
-const Registrar<OptimizationAlgorithm> kRegistrar("lm", [] { return std::make_unique<LevenbergMarquardt>(); },
-                                                  "Levenberg-Marquardt, multiplicative or additive damping");
+const Registrar<OptimizationAlgorithm> kRegistrar(
+    "lm", [] { return std::make_unique<LevenbergMarquardt>(); },
+    "Levenberg-Marquardt, multiplicative or additive damping");
 
 }  // namespace
 }  // namespace lrsvo

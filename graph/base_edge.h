@@ -104,9 +104,7 @@ class BaseEdge : public Edge {
     return 0.5 * rho;
   }
 
-  void addHessianBlock(int a, int b, double* block, int ld) const final {
-    kBlockTable[a][b](*this, block, ld);
-  }
+  void addHessianBlock(int a, int b, double* block, int ld) const final { kBlockTable[a][b](*this, block, ld); }
   void addGradient(int a, double* gradient) const final { kGradientTable[a](*this, gradient); }
 
   void writeData(std::ostream& out) const override {
@@ -148,9 +146,7 @@ class BaseEdge : public Edge {
   }
   static constexpr auto kAcceptTable = acceptTable(std::make_index_sequence<kVertexCount>{});
 
-  Residual whiten(const Residual& r) const {
-    return identityInformation_ ? r : Residual(sqrtInformation_ * r);
-  }
+  Residual whiten(const Residual& r) const { return identityInformation_ ? r : Residual(sqrtInformation_ * r); }
 
   double robustify(double s, double* weight) const {
     if (!kernel_) {
@@ -230,8 +226,7 @@ class BaseEdge : public Edge {
     return {&blockImpl<A, static_cast<int>(B)>...};
   }
   template <std::size_t... A>
-  static constexpr std::array<std::array<BlockFn, kVertexCount>, kVertexCount> blockTable(
-      std::index_sequence<A...>) {
+  static constexpr std::array<std::array<BlockFn, kVertexCount>, kVertexCount> blockTable(std::index_sequence<A...>) {
     return {blockRow<static_cast<int>(A)>(std::make_index_sequence<kVertexCount>{})...};
   }
   template <std::size_t... A>

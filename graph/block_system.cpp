@@ -149,8 +149,7 @@ double BlockSystem::cost(int threads) const {
 void BlockSystem::setDiagonalShift(const Eigen::VectorXd& shift) {
   for (int i = 0; i < blockCount(); ++i) {
     double* diag = values(blocks_[diagonalBlock(i)]);
-    for (int d = 0; d < dims_[i]; ++d)
-      diag[d * dims_[i] + d] = diagonal_[offsets_[i] + d] + shift[offsets_[i] + d];
+    for (int d = 0; d < dims_[i]; ++d) diag[d * dims_[i] + d] = diagonal_[offsets_[i] + d] + shift[offsets_[i] + d];
   }
 }
 

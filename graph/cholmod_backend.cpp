@@ -71,9 +71,7 @@ void CholmodBackend::analyze(const std::vector<int>& blockDims, const std::vecto
   if (!factor_) throw Error("cholmod: symbolic analysis failed");
 }
 
-void CholmodBackend::setZero() {
-  std::fill_n(static_cast<double*>(matrix_->x), matrix_->nzmax, 0.0);
-}
+void CholmodBackend::setZero() { std::fill_n(static_cast<double*>(matrix_->x), matrix_->nzmax, 0.0); }
 
 bool CholmodBackend::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
   cholmod_factorize(matrix_, factor_, &common_);

@@ -11,8 +11,7 @@ namespace lrsvo {
 void Graph::insertVertex(std::unique_ptr<Vertex> vertex) {
   if (!vertex) throw Error("addVertex: null vertex");
   const int id = vertex->id();
-  if (!byId_.emplace(id, vertex.get()).second)
-    throw Error("addVertex: duplicate vertex id " + std::to_string(id));
+  if (!byId_.emplace(id, vertex.get()).second) throw Error("addVertex: duplicate vertex id " + std::to_string(id));
   vertices_.push_back(std::move(vertex));
 }
 

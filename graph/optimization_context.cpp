@@ -79,9 +79,9 @@ void OptimizationContext::record(IterationRecord record) {
   record.iterationSeconds = record.cumulativeSeconds - lastRecordSeconds_;
   lastRecordSeconds_ = record.cumulativeSeconds;
   if (options_.verbose)
-    std::fprintf(stderr, "%4d cost %.6e change %10.3e |g| %9.2e |dx| %9.2e lambda %9.2e %s %.3fs\n",
-                 record.iteration, record.cost, record.costChange, record.gradientMaxNorm, record.stepNorm,
-                 record.lambda, record.accepted ? "accepted" : "rejected", record.cumulativeSeconds);
+    std::fprintf(stderr, "%4d cost %.6e change %10.3e |g| %9.2e |dx| %9.2e lambda %9.2e %s %.3fs\n", record.iteration,
+                 record.cost, record.costChange, record.gradientMaxNorm, record.stepNorm, record.lambda,
+                 record.accepted ? "accepted" : "rejected", record.cumulativeSeconds);
   summary_.iterations.push_back(record);
 }
 

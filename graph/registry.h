@@ -51,8 +51,7 @@ class Registry {
 
 template <typename Product>
 struct Registrar {
-  Registrar(const std::string& name, typename Registry<Product>::Factory factory,
-            std::string description = {}) {
+  Registrar(const std::string& name, typename Registry<Product>::Factory factory, std::string description = {}) {
     Registry<Product>::instance().add(name, std::move(factory), std::move(description));
   }
 };
@@ -63,7 +62,7 @@ struct Registrar {
 #define LRSVO_CONCAT(a, b) LRSVO_CONCAT_INNER(a, b)
 
 // Registers `Type` (default-constructible, derived from `Base`) under `name`.
-#define LRSVO_REGISTER(Base, Type, name, description)                              \
+#define LRSVO_REGISTER(Base, Type, name, description)                             \
   static const ::lrsvo::Registrar<Base> LRSVO_CONCAT(lrsvo_registrar_, __LINE__)( \
       name, [] { return std::unique_ptr<Base>(new Type()); }, description)
 

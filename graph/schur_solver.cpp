@@ -66,8 +66,8 @@ void SchurSolver::backSubstitute(const BlockSystem& system, const Eigen::VectorX
   Vector r = rhs.segment(system.offset(v), dl);
   for (int k : marginalCouplings_[l]) {
     const int i = blocks[k].row, di = system.dim(i);
-    r.noalias() -= Eigen::Map<const Coupling>(system.values(blocks[k]), di, dl).transpose() *
-                   xFree.segment(system.offset(i), di);
+    r.noalias() -=
+        Eigen::Map<const Coupling>(system.values(blocks[k]), di, dl).transpose() * xFree.segment(system.offset(i), di);
   }
   x.segment(system.offset(v), dl).noalias() =
       Eigen::Map<const Eigen::Matrix<double, DL, DL>>(vInverseValues_.data() + vInverseOffsets_[l], dl, dl) * r;
@@ -95,8 +95,9 @@ void SchurSolver::analyze(const BlockSystem& system) {
       rowCouplings_[block.row].push_back(k);
       marginalCouplings_[block.col - freeCount].push_back(k);
     } else if (block.row != block.col) {
-      throw Error("Schur solver: an edge joins marginalised vertices " + std::to_string(system.vertex(block.row)->id()) +
-                  " and " + std::to_string(system.vertex(block.col)->id()) + "; use a full solver");
+      throw Error("Schur solver: an edge joins marginalised vertices " +
+                  std::to_string(system.vertex(block.row)->id()) + " and " +
+                  std::to_string(system.vertex(block.col)->id()) + "; use a full solver");
     }
   }
 
@@ -148,7 +149,8 @@ bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, E
   // V^-1 per marginalised vertex and Y = W V^-1 per coupling.
   std::vector<char> positive(marginalCount, 1);
   parallelFor(0, marginalCount, threads, [&](int l) {
-    positive[l] = system.dim(freeCount + l) == 3 ? invertMarginal<3>(system, l) : invertMarginal<Eigen::Dynamic>(system, l);
+    positive[l] =
+        system.dim(freeCount + l) == 3 ? invertMarginal<3>(system, l) : invertMarginal<Eigen::Dynamic>(system, l);
   });
   for (char p : positive)
     if (!p) return false;
@@ -174,8 +176,8 @@ bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, E
     auto ri = reducedRhs.segment(system.offset(i), di);
     for (int k : rowCouplings_[i]) {
       const int l = blocks[k].col, dl = system.dim(l);
-      ri.noalias() -= Eigen::Map<const Eigen::MatrixXd>(yValues_.data() + yOffsets_[k], di, dl) *
-                      rhs.segment(system.offset(l), dl);
+      ri.noalias() -=
+          Eigen::Map<const Eigen::MatrixXd>(yValues_.data() + yOffsets_[k], di, dl) * rhs.segment(system.offset(l), dl);
     }
   });
   const auto reducedTime = Clock::now();

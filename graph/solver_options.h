@@ -12,7 +12,7 @@ enum class Damping {
 };
 
 struct SolverOptions {
-  std::string algorithm = "lm";               // Registry<OptimizationAlgorithm> name
+  std::string algorithm = "lm";                // Registry<OptimizationAlgorithm> name
   std::string linearSolver = "schur_cholmod";  // Registry<LinearSolver> name
   Damping damping = Damping::kMultiplicative;
   // Starting lambda; a negative value picks the default (1e-4 multiplicative,

@@ -42,9 +42,10 @@ std::string SolverSummary::briefReport() const {
 
 std::string SolverSummary::fullReport() const {
   std::ostringstream out;
-  out << format("Solver %s, %d threads: %d vertices, %d edges, %d parameters\n", solver.c_str(), threads,
-                vertexCount, edgeCount, parameterCount);
-  out << "iter        cost      cost_change   |gradient|        |step|        lambda  accepted  iter_time  total_time\n";
+  out << format("Solver %s, %d threads: %d vertices, %d edges, %d parameters\n", solver.c_str(), threads, vertexCount,
+                edgeCount, parameterCount);
+  out << "iter        cost      cost_change   |gradient|        |step|        lambda  accepted  iter_time  "
+         "total_time\n";
   for (const auto& it : iterations)
     out << format("%4d  %.6e  %12.3e  %12.3e  %12.3e  %12.3e  %8s  %8.2e  %10.2e\n", it.iteration, it.cost,
                   it.costChange, it.gradientMaxNorm, it.stepNorm, it.lambda, it.accepted ? "yes" : "no",

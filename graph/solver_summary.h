@@ -12,10 +12,10 @@ enum class Termination {
   kParameterTolerance,
   kMaxIterations,
   kTimeLimit,
-  kDampingLimit,     // lambda grew past its cap: no step lowers the cost
-  kNoDescent,        // Gauss-Newton: even short steps raise the cost
-  kSingularSystem,   // the normal equations are not positive definite (Gauss-Newton)
-  kNonFiniteCost,    // a step produced NaN/inf and could not be recovered
+  kDampingLimit,    // lambda grew past its cap: no step lowers the cost
+  kNoDescent,       // Gauss-Newton: even short steps raise the cost
+  kSingularSystem,  // the normal equations are not positive definite (Gauss-Newton)
+  kNonFiniteCost,   // a step produced NaN/inf and could not be recovered
 };
 
 const char* terminationName(Termination termination);
@@ -36,7 +36,7 @@ struct IterationRecord {
 // What one solve did, Ceres style. Costs are 1/2 sum rho(||r||^2).
 struct SolverSummary {
   std::string solver;
-  int vertexCount = 0;     // active (non-fixed) vertices
+  int vertexCount = 0;  // active (non-fixed) vertices
   int edgeCount = 0;
   int parameterCount = 0;  // scalar unknowns
   int threads = 1;
@@ -51,7 +51,7 @@ struct SolverSummary {
   double linearizeSeconds = 0.0;  // residuals, Jacobians and block sums
   double schurSeconds = 0.0;
   double factorizeSeconds = 0.0;
-  double costSeconds = 0.0;       // evaluating trial steps
+  double costSeconds = 0.0;  // evaluating trial steps
   double totalSeconds = 0.0;
 
   int iterationCount() const { return static_cast<int>(iterations.size()) - 1; }

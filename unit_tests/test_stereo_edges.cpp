@@ -4,8 +4,8 @@
 
 #include "edges/edge_project_base.h"
 #include "edges/edge_project_secondary.h"
-#include "vertices/so3.h"
 #include "test_problems.h"
+#include "vertices/so3.h"
 
 namespace lrsvo::test {
 namespace {

@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/pose_file.h"
 #include "eval/trajectory_alignment.h"
 #include "eval/trajectory_association.h"
 #include "eval/trajectory_metrics.h"
+#include "frontend/pose_file.h"
 #include "graph/error.h"
 #include "unit_tests/temp_folder.h"
 
