@@ -38,14 +38,9 @@ struct LatticeCell {
   void moveTo(std::int64_t x, std::int64_t y, std::uint32_t layer) {
     if (filled && ix == x && iy == y && salt == layer) return;
     const std::uint64_t row0 = rowHash(y, layer), row1 = rowHash(y + 1, layer);
-    *this = {true,
-             layer,
-             x,
-             y,
-             pointHash01(x, row0),
-             pointHash01(x + 1, row0),
-             pointHash01(x, row1),
-             pointHash01(x + 1, row1)};
+    filled = true, salt = layer, ix = x, iy = y;
+    a = pointHash01(x, row0), b = pointHash01(x + 1, row0);
+    c = pointHash01(x, row1), d = pointHash01(x + 1, row1);
   }
 };
 
@@ -94,7 +89,8 @@ double fractal(double x, double y, const Octaves& octaves, double footprint, std
 double fractalBound(const Octaves& octaves);
 // fractal() at (x[n], y) for n = 0 .. count - 1 into out[0 ..], the same
 // values bit for bit: four points at a time with AVX2 where the CPU has it
-// (sim/cpu_features.h).
+// (sim/cpu_features.h). Throws lrsvo::Error on more than
+// FractalTerms::kMaxTerms octaves.
 void fractalRow(const double* x, double y, int count, const Octaves& octaves, double footprint, std::uint32_t salt,
                 NoiseMemo& memo, double* out);
 // fractalRow()'s four-point path (sim/value_noise_avx2.cpp, x86-64 only),
