@@ -25,13 +25,18 @@ struct FieldCellLayout {
   std::array<std::array<double, 2>, 2> trackTones{};
 };
 
-// What the ground texture reuses from one texel to the next on this thread: the noise's lattice cells
-// (sim/value_noise.h), and the layout of the field cell (120 m, many tiles) the last texel lay in. A pure
-// memo: values do not depend on it.
+// What the ground texture reuses on this thread: the noise's lattice cells (sim/value_noise.h) and the layout
+// of the field cell (120 m, many tiles) the last texel lay in, a pure memo (values do not depend on it); and
+// the buffers of a row, kept so that no row allocates.
 struct TextureMemo {
   NoiseMemo noise;
   FieldCellLayout fieldCell;
-  std::vector<double> x, broad, grain;  // a row's texel positions and noise (kept: no allocation per row)
+  std::vector<double> x, broad, grain;  // a row of texels: positions and noise
+  struct Crowns {                       // a row of pixels: its crown hits, sampled together
+    std::vector<double> x, y, shade;
+    std::vector<float> footprint, value;
+    std::vector<int> pixel;
+  } crowns;
 };
 
 namespace {
@@ -104,12 +109,7 @@ void GroundTexture::greyRow(const RowHits& row, float* out) const {
   // The ground under every pixel in one pass (TexelTiles::sampleMany), then the obstacle pixels over it: crowns
   // gathered and sampled from their cache together, roofs and walls one by one.
   groundTexels_.sampleMany(row.x.data(), row.y.data(), row.footprint_m.data(), row.size(), out);
-  struct Crowns {
-    std::vector<double> x, y, shade;
-    std::vector<float> footprint, value;
-    std::vector<int> pixel;
-  };
-  thread_local Crowns crowns;  // kept from row to row: no allocation per row
+  TextureMemo::Crowns& crowns = threadTextureMemo().crowns;
   crowns.x.clear(), crowns.y.clear(), crowns.shade.clear(), crowns.footprint.clear(), crowns.pixel.clear();
   const Terrain::Tree* toned = nullptr;  // a crown's pixels lie side by side: its tone is hashed once for them
   double tone = 0.0;

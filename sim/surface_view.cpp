@@ -324,10 +324,12 @@ void SurfaceView::hitRow(int v, int first, int count, RowHits& row) const {
         SurfaceHit hit = row.hit(k);  // the ground, or a nearer obstacle
         double depth = (hit.point.z() - centre_.z()) / direction.z();
         if (!meets(span.id, direction, depth, hit)) continue;
+        const RowHits::Obstacle nearer{k, hit, static_cast<float>(footprint(hit))};
         int& at = row.obstacleAt[k];
-        if (at < 0) at = static_cast<int>(row.obstacles.size()), row.obstacles.push_back({k, hit, 0.0f});
-        row.obstacles[at].hit = hit;
-        row.obstacles[at].footprint_m = static_cast<float>(footprint(hit));
+        if (at >= 0)
+          row.obstacles[at] = nearer;
+        else
+          at = static_cast<int>(row.obstacles.size()), row.obstacles.push_back(nearer);
       }
     }
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "graph/error.h"
 #include "sim/cpu_features.h"
@@ -46,12 +47,13 @@ double forEachTerm(const Octaves& octaves, double footprint, std::uint32_t salt,
 
 FractalTerms fractalTerms(const Octaves& octaves, double footprint, std::uint32_t salt, NoiseMemo& memo) {
   FractalTerms sum;
-  sum.norm = forEachTerm(octaves, footprint, salt, memo,
-                         [&](double inverseLambda, double weight, std::uint32_t noiseSalt, LatticeCell& cell) {
-                           if (sum.count == FractalTerms::kMaxTerms)
-                             throw Error("value noise: a fractal sums more than 64 octaves");
-                           sum.terms[sum.count++] = {inverseLambda, weight, noiseSalt, &cell};
-                         });
+  sum.norm = forEachTerm(
+      octaves, footprint, salt, memo,
+      [&](double inverseLambda, double weight, std::uint32_t noiseSalt, LatticeCell& cell) {
+        if (sum.count == FractalTerms::kMaxTerms)
+          throw Error("value noise: a fractal sums more than " + std::to_string(FractalTerms::kMaxTerms) + " octaves");
+        sum.terms[sum.count++] = {inverseLambda, weight, noiseSalt, &cell};
+      });
   return sum;
 }
 
