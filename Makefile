@@ -50,12 +50,13 @@ demo: build
 SANITIZE_OPTIONS := -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLRSVO_SANITIZE=ON -DLRSVO_BUILD_BENCHMARKS=OFF \
   '-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG'
 # Left to `make test`: tests that take minutes each under ASan at -O1 (solves repeated for every
-# constraint plugin or start scale; whole rendered flights; whole simulated flights run two or eight times). The code
+# constraint plugin or start scale; whole rendered flights, the signalled runs of lrsvo_run_interrupted_cli
+# among them; whole simulated flights run two or eight times). The code
 # they exercise runs under the sanitizers in the smaller tests of the same suites (e.g.
 # Constraints.EveryPluginKeepsTheExtrinsicInItsBox, ImageRenderer.*, OdometryRunEuroc.*,
 # OdometryFlight.RecoversFromTrackingLossInANewSegment, ExtrinsicRateWindow.ExtrinsicMovesOnAtItsRateInsideTheBox,
 # ImageFrontEnd.MatchesAcrossTheRigOnRequestAsProcessWould).
-SANITIZE_SKIP := lrsvo_demo|example_three_camera_vo|OdometryRunSim\..*|OdometryFlight\.(HeldKeyframesStopTheWindowJumpingAtLongRange|BoundedExtrinsicTracksAFlexedRigWhereRigidStereoFails|FetchesSecondaryObservationsOnlyForTheFramesItKeeps)|ExtrinsicRateWindow\.FollowsAFlexingRigAtTheNewestKeyframe|Constraints\.(ActiveBoundsAgreeAcrossBarrierGradientProjectionAndNlopt|KktHoldsAtTheSolution|LogBarrierRoundsContinueFromAnIterateNearAnActiveBound|LogBarrierEndsJustInsideTheActiveBounds)|ScaleInitialisation\.WithoutKappaStartScalesFarFromOneAreNotRecovered
+SANITIZE_SKIP := lrsvo_demo|lrsvo_run_interrupted_cli|example_three_camera_vo|OdometryRunSim\..*|OdometryFlight\.(HeldKeyframesStopTheWindowJumpingAtLongRange|BoundedExtrinsicTracksAFlexedRigWhereRigidStereoFails|FetchesSecondaryObservationsOnlyForTheFramesItKeeps)|ExtrinsicRateWindow\.FollowsAFlexingRigAtTheNewestKeyframe|Constraints\.(ActiveBoundsAgreeAcrossBarrierGradientProjectionAndNlopt|KktHoldsAtTheSolution|LogBarrierRoundsContinueFromAnIterateNearAnActiveBound|LogBarrierEndsJustInsideTheActiveBounds)|ScaleInitialisation\.WithoutKappaStartScalesFarFromOneAreNotRecovered
 sanitize: export ASAN_OPTIONS := detect_leaks=1
 sanitize: export UBSAN_OPTIONS := print_stacktrace=1:halt_on_error=1
 sanitize: deps

@@ -11,6 +11,7 @@
 
 #include "apps/command.h"
 #include "apps/run_setup.h"
+#include "apps/stop_on_signal.h"
 #include "eval/run_report.h"
 
 namespace lrsvo::cli {
@@ -58,6 +59,8 @@ void runDemo(const DemoOptions& o) {
   }
   if (!o.quiet)
     for (RunOptions& variant : variants) variant.progress = &std::cerr;
+  const StopOnSignal stop;
+  for (RunOptions& variant : variants) variant.stop = &stop.requested();
   std::vector<RunResult> runs;
   GroundTruth truth;
   auto header = [&](const std::string& name, int count, const Rig& rig) {
@@ -100,6 +103,9 @@ void runDemo(const DemoOptions& o) {
       "alone.\n");
   for (const std::string& note : notes) std::printf("  %s\n", note.c_str());
   std::printf("Outputs in %s/{constrained,unconstrained,rigid}/\n", o.out.c_str());
+  if (stop.requested()) std::printf("Stopped early by a signal: the outputs cover the frames done\n");
+  std::fflush(stdout);
+  stop.throwIfRequested();
 }
 
 void addDemoCommand(CLI::App& app) {

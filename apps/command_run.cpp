@@ -7,6 +7,7 @@
 
 #include "apps/command.h"
 #include "apps/run_setup.h"
+#include "apps/stop_on_signal.h"
 #include "eval/run_report.h"
 
 namespace lrsvo::cli {
@@ -31,6 +32,12 @@ void printMetrics(const nlohmann::json& m) {
     std::printf("\n");
   };
   std::printf("  %-24s %d of %d\n", "frames tracked", m["frames_tracked"].get<int>(), m["frames"].get<int>());
+  if (m["frames_predicted"].get<int>() > 0)
+    std::printf("  %-24s %d (constant velocity through a tracking loss)\n", "frames predicted",
+                m["frames_predicted"].get<int>());
+  if (m["frames_bad"].get<int>() > 0)
+    std::printf("  %-24s %d (skipped: unusable images; frames.csv says why)\n", "bad frames",
+                m["frames_bad"].get<int>());
   number("segments", "%.0f");
   number("fps", "%.1f (the odometry alone: front end and back end)");
   number("distance_m", "%.1f m");
@@ -58,6 +65,8 @@ void runCommand(const RunCommandOptions& o) {
   options.outDir =
       o.out.empty() ? std::filesystem::path("lrsvo_runs") / folderName(o.source) : std::filesystem::path(o.out);
   if (!o.quiet) options.progress = &std::cerr;
+  const StopOnSignal stop;
+  options.stop = &stop.requested();
   RunResult run;
   GroundTruth truth;
   if (o.featureLevel) {
@@ -78,6 +87,9 @@ void runCommand(const RunCommandOptions& o) {
   std::printf("  output in %s/ (trajectory.tum, extrinsics.csv, frames.csv, metrics.json", options.outDir.c_str());
   for (const auto& plot : report.plots) std::printf(", %s", plot.filename().c_str());
   std::printf(")\n");
+  if (run.stopped) std::printf("  stopped early by a signal: the outputs cover the frames done\n");
+  std::fflush(stdout);
+  stop.throwIfRequested();
 }
 
 void addRunCommand(CLI::App& app) {
@@ -85,7 +97,7 @@ void addRunCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("run", "Run the long-range stereo odometry on a stereo sequence");
   command
       ->add_option("source", options->source,
-                   "sim:demo | sim:paper | sim:FILE.yaml (a synthetic flight rendered on the fly), or a data set "
+                   "sim:demo | sim:paper | sim:stress | sim:FILE.yaml (a synthetic flight rendered on the fly), or a data set "
                    "folder in the EuRoC (DIR/mav0) or KITTI odometry (DIR/image_0, calib.txt) layout; "
                    "euroc:DIR or kitti:DIR forces the layout")
       ->required();
@@ -106,7 +118,10 @@ void addRunCommand(CLI::App& app) {
       "metrics.json (frames, frames_tracked, distance_m, ate_rmse_m, drift_percent, scale_error_percent, fps, ...) "
       "and plots: trajectory_top.png, position_error.png, orientation_error.png, extrinsics.png. fps is the "
       "odometry's own rate, without reading or rendering frames. Frames before the first initialisation, and after "
-      "a tracking loss until the next, have no pose: the trajectory skips them and frames.csv marks them.");
+      "a tracking loss until the next, have no pose: the trajectory skips them and frames.csv marks them (status "
+      "initialising, or bad_frame with the reason in note). Ctrl-C or SIGTERM stops after the current frame and "
+      "writes every output for the frames done (exit status 130 or 143); a second Ctrl-C quits at once. Each "
+      "frame's lines are written whole as it is estimated, so even a killed run leaves no broken line.");
   command->callback([options] { runCommand(*options); });
 }
 

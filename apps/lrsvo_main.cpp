@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/command.h"
+#include "apps/stop_on_signal.h"
 #include "graph/error.h"
 
 namespace lrsvo::cli {
@@ -26,6 +27,9 @@ int main(int argc, char** argv) {
   } catch (const lrsvo::Error& e) {
     std::cerr << "lrsvo: error: " << e.what() << '\n';
     return 1;
+  } catch (const lrsvo::cli::Interrupted& stopped) {
+    std::cerr << "lrsvo: stopped by signal " << stopped.signal << " with the outputs written\n";
+    return 128 + stopped.signal;
   }
   return 0;
 }

@@ -65,6 +65,12 @@ void OdometrySettings::addOptions(CLI::App& command) {
   command.add_option("--solver", solver, "Solver of the window adjustment (lrsvo solvers lists them)")
       ->capture_default_str();
   command.add_option("--seed", seed, "Seed of every random draw (RANSAC, MLESAC)")->capture_default_str();
+  command
+      .add_option("--on-bad-frame", onBadFrame,
+                  "A frame whose images cannot be used (missing, undecodable, blank, wrongly sized): skip gives it no "
+                  "pose, says why in frames.csv and goes on; stop ends the run with an error")
+      ->check(CLI::IsMember({"skip", "stop"}))
+      ->capture_default_str();
 }
 
 RunOptions OdometrySettings::runOptions() const {
@@ -89,6 +95,7 @@ RunOptions OdometrySettings::runOptions() const {
   options.frontEnd.stereo.bandWidth_px = band_px;
   options.frontEnd.stereo.minDepth_m = minDepth_m;
   options.frontEnd.seed = seed;
+  options.onBadFrame = badFramePolicyFromName(onBadFrame);
   return options;
 }
 
@@ -99,7 +106,7 @@ std::unique_ptr<FrameSource> openSource(const std::string& spec) {
 
 FeatureLevelFlight simulateFeatureLevel(const std::string& spec) {
   if (spec.rfind("sim:", 0) != 0)
-    throw Error("--feature-level needs a sim: source (sim:demo, sim:paper, sim:FILE.yaml), not '" + spec + "'");
+    throw Error("--feature-level needs a sim: source (sim:demo, sim:paper, sim:stress, sim:FILE.yaml), not '" + spec + "'");
   const SimScenario scenario = loadScenario(spec.substr(4));
   SimulatedSequence sequence = simulateSequence(featureSimulationOptions(scenario));
   FeatureLevelFlight flight{spec + " (feature level)", sequence.rig, std::move(sequence.frames), {}};

@@ -30,6 +30,7 @@ struct OdometrySettings {
   double minDepth_m = 20.0;
   std::string solver = "lm_schur_dense";
   std::uint64_t seed = 1;
+  std::string onBadFrame = "skip";
 
   void addOptions(CLI::App& command);
   // The odometry and front-end options these settings stand for.

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "eval/run_writer.h"
+#include "frontend/frame_check.h"
 #include "frontend/odometry.h"
 #include "graph/error.h"
 
@@ -49,12 +50,21 @@ void showProgress(std::ostream& out, const RunTotals& totals, double wall_s, int
 
 }  // namespace
 
+BadFramePolicy badFramePolicyFromName(const std::string& name) {
+  if (name == "skip") return BadFramePolicy::kSkip;
+  if (name == "stop") return BadFramePolicy::kStop;
+  throw Error("unknown bad-frame policy '" + name + "' (skip | stop)");
+}
+
 OdometryPipeline::OdometryPipeline(const FrameSource& source, const RunOptions& options)
     : OdometryPipeline(source.rig(), source.distortion(), source.groundTruth(), options) {}
 
 OdometryPipeline::OdometryPipeline(const Rig& rig, const std::vector<LensDistortion>& distortion,
                                    const GroundTruth& truth, const RunOptions& options)
-    : odometry_(std::make_unique<Odometry>(rig, options.odometry)),
+    : rig_(rig),
+      onBadFrame_(options.onBadFrame),
+      progress_(options.progress),
+      odometry_(std::make_unique<Odometry>(rig, options.odometry)),
       frontEnd_(std::make_unique<ImageFrontEnd>(rig, distortion, options.frontEnd)) {
   if (!options.outDir.empty()) writer_ = std::make_unique<RunWriter>(options.outDir, rig, truth, options.firstFrame);
 }
@@ -62,6 +72,8 @@ OdometryPipeline::OdometryPipeline(const Rig& rig, const std::vector<LensDistort
 OdometryPipeline::~OdometryPipeline() = default;
 
 void OdometryPipeline::process(const StereoFrame& frame) {
+  const std::string defect = frameDefect(frame, rig_);
+  if (!defect.empty()) return skipBadFrame(frame, defect);
   const auto start = Clock::now();
   const FrameObservations observations = frontEnd_->track(frame);
   result_.totals.frontEndSeconds += secondsSince(start);
@@ -81,7 +93,7 @@ void OdometryPipeline::process(const StereoFrame& frame) {
       frontEnd_->centreBandsOnCalibration();
     std::vector<Observation> secondary = frontEnd_->matchAcrossRig();
     stereoSeconds = secondsSince(matchStart);
-    pendingTimings_.back() = frontEnd_->lastTimings();
+    pending_.back().timings = frontEnd_->lastTimings();
     return secondary;
   });
   result_.totals.frontEndSeconds += stereoSeconds;
@@ -96,7 +108,7 @@ void OdometryPipeline::process(const FrameObservations& observations, const Fron
 void OdometryPipeline::run(const FrameObservations& observations, const FrontEndTimings& frontEnd,
                            const SecondaryObservations& secondary) {
   RunTotals& totals = result_.totals;
-  pendingTimings_.push_back(frontEnd);
+  pending_.push_back({frontEnd, std::nullopt});
 
   const auto start = Clock::now();
   const std::vector<FrameEstimate> estimates = odometry_->process(observations, secondary);
@@ -106,27 +118,57 @@ void OdometryPipeline::run(const FrameObservations& observations, const FrontEnd
   record(estimates);
 }
 
+void OdometryPipeline::skipBadFrame(const StereoFrame& frame, const std::string& defect) {
+  if (onBadFrame_ == BadFramePolicy::kStop)
+    throw Error("frame " + std::to_string(frame.index) + ": " + defect + " (--on-bad-frame skip goes on without it)");
+  FrameEstimate estimate;
+  estimate.frame = odometry_->skipFrame();
+  estimate.time_s = frame.time_s;
+  estimate.badFrame = true;
+  estimate.note = defect;
+  pending_.push_back({{}, std::move(estimate)});
+  ++result_.totals.frames;
+  ++result_.totals.badFrames;
+  if (progress_) *progress_ << "\nframe " << frame.index << " skipped: " << defect << '\n' << std::flush;
+  recordBadFrames();
+}
+
 RunResult OdometryPipeline::finish() {
   record(odometry_->finish());
+  recordBadFrames();
   writer_.reset();  // flushes and closes the files
   return std::move(result_);
 }
 
 void OdometryPipeline::record(const std::vector<FrameEstimate>& estimates) {
-  RunTotals& totals = result_.totals;
   for (const FrameEstimate& estimate : estimates) {
-    if (pendingTimings_.empty()) throw Error("odometry pipeline: an estimate for a frame never processed");
-    const FrontEndTimings timings = pendingTimings_.front();
-    pendingTimings_.pop_front();
-    addTimings(totals.frontEnd, timings);
-    addTimes(totals.backEnd, estimate.times);
-    totals.tracked += estimate.tracked;
-    totals.keyframes += estimate.keyframe;
-    totals.segments = std::max(totals.segments, estimate.segment + 1);
-    result_.segments.push_back(estimate.tracked ? estimate.segment : -1);
-    if (estimate.tracked) result_.trajectory.add(estimate.time_s, estimate.cameraFromWorld.inverse());
-    if (writer_) writer_->write(estimate, timings);
+    recordBadFrames();
+    if (pending_.empty()) throw Error("odometry pipeline: an estimate for a frame never processed");
+    const FrontEndTimings timings = pending_.front().timings;
+    pending_.pop_front();
+    write(estimate, timings);
   }
+}
+
+void OdometryPipeline::recordBadFrames() {
+  while (!pending_.empty() && pending_.front().badFrame) {
+    write(*pending_.front().badFrame, pending_.front().timings);
+    pending_.pop_front();
+  }
+}
+
+void OdometryPipeline::write(const FrameEstimate& estimate, const FrontEndTimings& timings) {
+  RunTotals& totals = result_.totals;
+  addTimings(totals.frontEnd, timings);
+  addTimes(totals.backEnd, estimate.times);
+  totals.tracked += estimate.tracked;
+  totals.predicted += estimate.predicted;
+  totals.keyframes += estimate.keyframe;
+  totals.segments = std::max(totals.segments, estimate.segment + 1);
+  result_.segments.push_back(estimate.tracked ? estimate.segment : -1);
+  if (estimate.tracked || estimate.predicted)
+    result_.trajectory.add(estimate.time_s, estimate.cameraFromWorld.inverse());
+  if (writer_) writer_->write(estimate, timings);
 }
 
 int framesInRun(int sourceFrames, int firstFrame, int maxFrames) {
@@ -146,7 +188,12 @@ std::vector<RunResult> runOdometry(FrameSource& source, const std::vector<RunOpt
 
   const auto start = Clock::now();
   double sourceSeconds = 0.0;
+  bool stopped = false;
   for (int frames = 0; frameCount < 0 || frames < frameCount; ++frames) {
+    if (first.stop && first.stop->load()) {
+      stopped = true;
+      break;
+    }
     const auto read = Clock::now();
     std::optional<StereoFrame> frame = source.next();
     sourceSeconds += secondsSince(read);
@@ -160,6 +207,7 @@ std::vector<RunResult> runOdometry(FrameSource& source, const std::vector<RunOpt
   for (auto& pipeline : pipelines) {
     results.push_back(pipeline->finish());
     results.back().totals.sourceSeconds += sourceSeconds;
+    results.back().stopped = stopped;
   }
   return results;
 }
@@ -173,13 +221,20 @@ std::vector<RunResult> runOdometry(const Rig& rig, const std::vector<FrameObserv
     const int count = framesInRun(static_cast<int>(frames.size()), options.firstFrame, options.maxFrames);
     const int first = std::min(options.firstFrame, static_cast<int>(frames.size()));
     const auto start = Clock::now();
+    bool stopped = false;
     for (int i = 0; i < count; ++i) {
+      if (options.stop && options.stop->load()) {
+        stopped = true;
+        break;
+      }
       pipeline.process(frames[static_cast<std::size_t>(first + i)]);
       if (options.progress && (i + 1) % 100 == 0)
         showProgress(*options.progress, pipeline.totals(), secondsSince(start), count, false);
     }
     if (options.progress) showProgress(*options.progress, pipeline.totals(), secondsSince(start), count, true);
     results.push_back(pipeline.finish());
+    results.back().stopped = stopped;
+    if (stopped) break;
   }
   return results;
 }

@@ -1,9 +1,11 @@
 #pragma once
 
+#include <atomic>
 #include <deque>
 #include <filesystem>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,10 @@ namespace lrsvo {
 class Odometry;
 class RunWriter;
 
+enum class BadFramePolicy { kSkip, kStop };
+// Parses "skip" | "stop"; throws lrsvo::Error otherwise.
+BadFramePolicy badFramePolicyFromName(const std::string& name);
+
 struct RunOptions {
   OdometryOptions odometry;
   ImageFrontEndOptions frontEnd;
@@ -25,6 +31,13 @@ struct RunOptions {
   int maxFrames = -1;                // < 0: every frame of the source (from firstFrame)
   std::filesystem::path outDir;      // empty: write nothing
   std::ostream* progress = nullptr;  // one updating line: frame, fps, ETA (of the first variant's options)
+  // Set (e.g. by a signal handler) to end the run after the current frame, as
+  // if the source had ended there: every output is still written whole.
+  const std::atomic<bool>* stop = nullptr;
+  // A frame whose images cannot be used (unreadable, blank, wrongly sized):
+  // kSkip gives it no pose, says why in frames.csv and goes on; kStop ends the
+  // run with an lrsvo::Error naming the frame.
+  BadFramePolicy onBadFrame = BadFramePolicy::kSkip;
 };
 
 // Sums over a run; the odometry's own time excludes reading or rendering frames.
@@ -33,6 +46,8 @@ struct RunTotals {
   int tracked = 0;
   int keyframes = 0;
   int segments = 0;
+  int badFrames = 0;             // frames skipped for unusable images
+  int predicted = 0;             // frames posed by the constant-velocity prediction through a loss
   double frontEndSeconds = 0.0;  // features, tracking, stereo matching
   double backEndSeconds = 0.0;   // initialisation, pose, triangulation, window adjustment
   double sourceSeconds = 0.0;    // reading or rendering frames (not the odometry's), deferred images included
@@ -44,9 +59,10 @@ struct RunTotals {
 
 struct RunResult {
   RunTotals totals;
-  Trajectory trajectory;  // base camera, world-from-camera, tracked frames only
+  Trajectory trajectory;  // base camera, world-from-camera, tracked and predicted frames
   // Per input frame, whether it was tracked and its segment (gaps show as -1).
   std::vector<int> segments;
+  bool stopped = false;  // RunOptions::stop ended it before the source's end
 };
 
 // The image front end and the odometry for one source, fed frame by frame.
@@ -70,12 +86,27 @@ class OdometryPipeline {
  private:
   void run(const FrameObservations& observations, const FrontEndTimings& frontEnd,
            const SecondaryObservations& secondary);
+  void skipBadFrame(const StereoFrame& frame, const std::string& defect);
   void record(const std::vector<FrameEstimate>& estimates);
+  // Writes the bad frames at the head of pending_ (they wait for the frames before them).
+  void recordBadFrames();
+  void write(const FrameEstimate& estimate, const FrontEndTimings& timings);
 
+  // A frame on its way to the outputs, in frame order: the odometry's frames
+  // wait here while it buffers them (with their front-end timings), a bad
+  // frame with its estimate, already known.
+  struct PendingFrame {
+    FrontEndTimings timings;
+    std::optional<FrameEstimate> badFrame;
+  };
+
+  Rig rig_;
+  BadFramePolicy onBadFrame_;
+  std::ostream* progress_;
   std::unique_ptr<Odometry> odometry_;
   std::unique_ptr<ImageFrontEnd> frontEnd_;
   std::unique_ptr<RunWriter> writer_;
-  std::deque<FrontEndTimings> pendingTimings_;  // wait with their frame while the odometry buffers it
+  std::deque<PendingFrame> pending_;
   RunResult result_;
 };
 

@@ -16,6 +16,8 @@ nlohmann::json runJson(const RunTotals& t) {
   const double frames = std::max(1, t.frames);
   return {{"frames", t.frames},
           {"frames_tracked", t.tracked},
+          {"frames_predicted", t.predicted},
+          {"frames_bad", t.badFrames},
           {"keyframes", t.keyframes},
           {"segments", t.segments},
           {"fps", t.fps()},
@@ -57,6 +59,7 @@ RunReport writeRunReport(const std::filesystem::path& outDir, const RunResult& r
                          bool plots) {
   RunReport report;
   report.metrics = runJson(run.totals);
+  report.metrics["stopped_early"] = run.stopped;
   if (truth.poses.empty()) {
     report.warning = "the source has no ground truth: no trajectory metrics";
   } else if (run.trajectory.size() < 2) {

@@ -19,7 +19,8 @@ struct RunReport {
   std::string warning;                       // why plots or metrics are missing, if they are
 };
 
-// Writes metrics.json (frames, frames_tracked, segments, fps, time per stage,
+// Writes metrics.json (frames, frames_tracked, frames_predicted, frames_bad, segments,
+// stopped_early (RunOptions::stop ended the run), fps, time per stage,
 // and with the truth distance_m, ate_rmse_m, drift_percent,
 // scale_error_percent, ...) and the plots (trajectory against truth, position
 // and orientation error over time, the extrinsic's six parameters over time

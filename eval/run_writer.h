@@ -10,7 +10,8 @@
 namespace lrsvo {
 
 // Streams a run's outputs into a folder as frames are estimated:
-//  trajectory.tum  tracked frames, `t tx ty tz qx qy qz qw` (world-from-camera of the base camera);
+//  trajectory.tum  tracked frames, `t tx ty tz qx qy qz qw` (world-from-camera of the base camera), and
+//                  the frames predicted through a short tracking loss, each line ending `# predicted`;
 //  extrinsics.csv  per tracked frame and secondary camera, the estimated S and, when known, the true one;
 //  frames.csv      per frame: tracked, keyframe, segment, feature counts, window error, time per stage (ms);
 //  rig.json        the calibration and the tolerances (the box the bounded S lives in).

@@ -144,12 +144,12 @@ std::optional<StereoFrame> EurocSource::next() {
   frame.time_s = paths.time_s;
   for (std::size_t c = 0; c < 2; ++c) {
     cv::Mat image = cv::imread(paths.images[c], cv::IMREAD_GRAYSCALE);
-    if (image.empty()) throw Error("EuRoC: cannot read image " + paths.images[c]);
     const Camera& camera = rig_.cameras[c];
-    if (image.cols != camera.width || image.rows != camera.height)
-      throw Error("EuRoC: image " + paths.images[c] + " is " + std::to_string(image.cols) + "x" +
-                  std::to_string(image.rows) + ", sensor.yaml says " + std::to_string(camera.width) + "x" +
-                  std::to_string(camera.height));
+    if (image.empty() && frame.defect.empty()) frame.defect = "cannot read image " + paths.images[c];
+    if (!image.empty() && (image.cols != camera.width || image.rows != camera.height) && frame.defect.empty())
+      frame.defect = "image " + paths.images[c] + " is " + std::to_string(image.cols) + "x" +
+                     std::to_string(image.rows) + ", sensor.yaml says " + std::to_string(camera.width) + "x" +
+                     std::to_string(camera.height);
     frame.images.push_back(std::move(image));
   }
   return frame;

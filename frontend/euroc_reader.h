@@ -28,6 +28,8 @@ EurocCameraCalibration readEurocSensor(const std::string& path);
 // images of equal timestamp (cam0 images without a partner are skipped).
 // Ground truth, when present: DIR/groundtruth_cam0_tum.txt (poses of cam0),
 // else DIR/groundtruth_body_tum.txt (poses of the body, moved to cam0 by T_BS).
+// An image that cannot be read, or is not the size sensor.yaml gives, is
+// reported in its frame's defect; the sequence goes on.
 class EurocSource : public FrameSource {
  public:
   explicit EurocSource(const std::string& directory);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <unordered_set>
 
@@ -41,10 +42,19 @@ cv::Point2f medianMotion(const std::vector<Track>& tracks) {
 
 }  // namespace
 
+KltImage FeatureTracker::withBrightnessFor(const KltImage& previous, const KltImage& next) const {
+  const double before = cv::mean(previous.image)[0], after = cv::mean(next.image)[0];
+  if (std::abs(after - before) <= options_.brightnessTolerance * before) return previous;
+  return makeKltImage(withBrightnessOf(previous.image, next.image), options_.klt);
+}
+
 FeatureTracker::FeatureTracker(const FeatureTrackerOptions& options) : options_(options), detector_(options.detector) {
   if (options.targetFeatures < 1) throw Error("feature tracker: targetFeatures must be at least 1");
   if (!(options.topUpFraction >= 0.0 && options.topUpFraction <= 1.0))
     throw Error("feature tracker: topUpFraction must lie in [0, 1]");
+  if (!(options.realignBelowFraction >= 0.0 && options.realignBelowFraction <= 1.0))
+    throw Error("feature tracker: realignBelowFraction must lie in [0, 1]");
+  if (!(options.brightnessTolerance >= 0.0)) throw Error("feature tracker: brightnessTolerance must be >= 0");
   if (!(options.descriptorRatio > 0.0 && options.descriptorRatio <= 1.0))
     throw Error("feature tracker: descriptorRatio must lie in (0, 1]");
 }
@@ -87,9 +97,23 @@ std::vector<cv::Point2f> FeatureTracker::predictedPixels() const {
 
 void FeatureTracker::followByKlt(const KltImage& image) {
   if (tracks_.empty()) return;
+  const KltImage from = withBrightnessFor(previous_, image);
   const std::vector<cv::Point2f> points = pixelsOf(tracks_);
   std::vector<cv::Point2f> positions = predictedPixels();
-  const std::vector<bool> found = trackKlt(previous_, image, points, positions, options_.klt);
+  std::vector<bool> found = trackKlt(from, image, points, positions, options_.klt);
+  const auto count = [](const std::vector<bool>& flags) { return std::count(flags.begin(), flags.end(), true); };
+  if (static_cast<double>(count(found)) < options_.realignBelowFraction * static_cast<double>(points.size())) {
+    const cv::Point2f shift = globalShift(from, image).shift;
+    std::vector<cv::Point2f> shifted;
+    shifted.reserve(points.size());
+    for (const cv::Point2f& p : points) shifted.push_back(p + shift);
+    std::vector<bool> foundShifted = trackKlt(from, image, points, shifted, options_.klt);
+    if (count(foundShifted) > count(found)) {
+      positions = std::move(shifted);
+      found = std::move(foundShifted);
+      statistics_.realigned = true;
+    }
+  }
   std::vector<Track> kept;
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
     if (!found[i]) continue;

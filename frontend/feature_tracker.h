@@ -22,6 +22,14 @@ struct FeatureTrackerOptions {
   // topping up the few lost every frame would cost more than the tracking.
   double topUpFraction = 0.1;
   KltOptions klt;
+  // "klt": when fewer than this fraction of the tracks follow from their
+  // predicted positions, the whole image's shift (globalShift) predicts them
+  // instead, and whichever prediction keeps more tracks wins.
+  double realignBelowFraction = 0.5;
+  // "klt": when the mean grey level changes by more than this fraction
+  // between frames (an exposure step), the previous image is brought to the
+  // new one's brightness before tracking (KLT assumes it constant).
+  double brightnessTolerance = 0.05;
   double descriptorSearch_px = 40.0;  // "descriptor": radius around the predicted position
   double descriptorRatio = 0.8;       // best distance below this times the second best
   int maxHamming = 64;                // "descriptor": worst accepted distance (of 256 bits)
@@ -41,8 +49,9 @@ struct Track {
 };
 
 struct TrackerStatistics {
-  int tracked = 0;  // tracks continued from the previous frame
-  int added = 0;    // new tracks detected this frame
+  int tracked = 0;         // tracks continued from the previous frame
+  int added = 0;           // new tracks detected this frame
+  bool realigned = false;  // the tracks were predicted by the whole image's shift
   double track_ms = 0.0;
   double detect_ms = 0.0;
 };
@@ -67,6 +76,9 @@ class FeatureTracker {
   // motion, or a new track by the median motion of the others.
   std::vector<cv::Point2f> predictedPixels() const;
   void followByKlt(const KltImage& image);
+  // `previous`, or, after an exposure step, its image brought to the
+  // brightness of `next` (FeatureTrackerOptions::brightnessTolerance).
+  KltImage withBrightnessFor(const KltImage& previous, const KltImage& next) const;
   void followByDescriptor(const DetectedFeatures& candidates);
   void addNew(DetectedFeatures features, int wanted);
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -20,7 +21,12 @@ struct StageTimes {
 struct FrameEstimate {
   int frame = 0;  // index of the input frame
   double time_s = 0.0;
-  bool tracked = false;  // false: no pose (initialising, or tracking lost)
+  bool tracked = false;   // false: no pose (initialising, or tracking lost)
+  bool badFrame = false;  // no pose because the images could not be used
+  // Not measured: cameraFromWorld is the constant-velocity prediction from the
+  // last measured poses (tracking lost a short while before).
+  bool predicted = false;
+  std::string note;  // why a frame has no pose, when known (a bad image, a failed initialisation)
   bool keyframe = false;
   // Tracked stretches between losses are numbered 0, 1, ...; each new one
   // starts where the last tracked pose was (the trajectory marks the gap).
@@ -38,5 +44,13 @@ struct FrameEstimate {
   int bundleIterations = 0;
   StageTimes times;
 };
+
+// "tracked", "predicted", "bad_frame" or "initialising" (no pose: waiting
+// for, or given up by, an initialisation), as frames.csv's status column says it.
+inline const char* frameStatusName(const FrameEstimate& estimate) {
+  if (estimate.tracked) return "tracked";
+  if (estimate.predicted) return "predicted";
+  return estimate.badFrame ? "bad_frame" : "initialising";
+}
 
 }  // namespace lrsvo

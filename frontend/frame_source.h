@@ -40,6 +40,10 @@ struct StereoFrame {
   // Set by a source that defers some cameras' images (shared by copies of the
   // frame; it may call back into the source, so use it while the source lives).
   std::shared_ptr<DeferredImages> deferred;
+  // Set by a source that could not produce this frame's images (a missing or
+  // undecodable file); the frame is still delivered, so that a run can go on
+  // without it (frameDefect, frame_check.h).
+  std::string defect;
 
   int cameraCount() const { return static_cast<int>(images.size()); }
   // Camera k's image: images[k], or the deferred one, made now if not yet.

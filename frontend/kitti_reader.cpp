@@ -122,9 +122,10 @@ std::optional<StereoFrame> KittiSource::next() {
   frame.time_s = times_[static_cast<std::size_t>(next_)];
   for (int c = 0; c < 2; ++c) {
     cv::Mat image = cv::imread(imagePath(c, next_), cv::IMREAD_GRAYSCALE);
-    if (image.empty()) throw Error("KITTI: cannot read image " + imagePath(c, next_));
-    if (image.cols != rig_.cameras[0].width || image.rows != rig_.cameras[0].height)
-      throw Error("KITTI: image " + imagePath(c, next_) + " differs in size from the sequence's first image");
+    if (image.empty() && frame.defect.empty()) frame.defect = "cannot read image " + imagePath(c, next_);
+    if (!image.empty() && (image.cols != rig_.cameras[0].width || image.rows != rig_.cameras[0].height) &&
+        frame.defect.empty())
+      frame.defect = "image " + imagePath(c, next_) + " differs in size from the sequence's first image";
     frame.images.push_back(std::move(image));
   }
   ++next_;

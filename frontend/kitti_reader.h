@@ -15,7 +15,8 @@ namespace lrsvo {
 // x = -P1[0][3] / fx along the base camera's x axis, unrotated. Ground truth,
 // when present: SEQ/poses.txt, else the data set's poses/<SEQ name>.txt two
 // levels up (sequences/00 -> poses/00.txt): 12 numbers a line, the 3x4
-// world-from-camera-0 matrix of each frame.
+// world-from-camera-0 matrix of each frame. An image that cannot be read, or
+// differs in size from the first, is reported in its frame's defect.
 class KittiSource : public FrameSource {
  public:
   explicit KittiSource(const std::string& directory);

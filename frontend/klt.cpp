@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
 
 #include "graph/error.h"
@@ -49,6 +50,21 @@ std::vector<bool> trackKlt(const KltImage& from, const KltImage& to, const std::
         forward[i] && backward[i] && windowInside(positions[i], to.image, options.window_px) && d.dot(d) <= limit2;
   }
   return found;
+}
+
+ImageShift globalShift(const KltImage& from, const KltImage& to) {
+  const int level = std::min(from.levels(), to.levels()) - 1;
+  cv::Mat a, b;
+  from.level(level).convertTo(a, CV_32F);
+  to.level(level).convertTo(b, CV_32F);
+  if (a.size() != b.size()) throw Error("KLT: global shift between images of different sizes");
+  cv::Mat window;
+  cv::createHanningWindow(window, a.size(), CV_32F);
+  ImageShift result;
+  const cv::Point2d shift = cv::phaseCorrelate(a, b, window, &result.response);
+  const double scale = static_cast<double>(from.image.cols) / a.cols;
+  result.shift = cv::Point2f(static_cast<float>(shift.x * scale), static_cast<float>(shift.y * scale));
+  return result;
 }
 
 cv::Mat withBrightnessOf(const cv::Mat& image, const cv::Mat& reference) {

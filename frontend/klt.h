@@ -36,6 +36,19 @@ KltImage makeKltImage(const cv::Mat& image, const KltOptions& options);
 std::vector<bool> trackKlt(const KltImage& from, const KltImage& to, const std::vector<cv::Point2f>& points,
                            std::vector<cv::Point2f>& positions, const KltOptions& options);
 
+// How far the whole image moved from `from` to `to` (a point at p in `from`
+// is near p + shift in `to`), in full-resolution pixels: phase correlation of
+// the pyramids' coarsest levels, which finds shifts up to half an image. An
+// abrupt attitude change (a gust rolling the aircraft) moves a nadir image
+// almost uniformly by hundreds of pixels, beyond what KLT's pyramid reaches
+// from a prediction by the tracks' last motion. `response` is the
+// correlation peak's height in [0, 1] (low: no clear single shift).
+struct ImageShift {
+  cv::Point2f shift;
+  double response = 0.0;
+};
+ImageShift globalShift(const KltImage& from, const KltImage& to);
+
 // `image` with a gain and offset that give it the mean and standard deviation
 // of `reference`'s intensities (two cameras of a rig expose differently).
 cv::Mat withBrightnessOf(const cv::Mat& image, const cv::Mat& reference);

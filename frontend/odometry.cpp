@@ -38,6 +38,23 @@ Odometry::Odometry(Rig rig, OdometryOptions options)
 }
 
 std::vector<FrameEstimate> Odometry::process(const FrameObservations& frame, const SecondaryObservations& secondary) {
+  return settled(estimate(frame, secondary));
+}
+
+std::vector<FrameEstimate> Odometry::settled(std::vector<FrameEstimate> estimates) {
+  for (FrameEstimate& e : estimates) {
+    if (e.tracked) {
+      motion_.add(e.time_s, e.cameraFromWorld.inverse());
+    } else if (motion_.known() && e.time_s >= motion_.lastTime() &&
+               e.time_s - motion_.lastTime() <= options_.maxPrediction_s) {
+      e.predicted = true;
+      e.cameraFromWorld = motion_.predict(e.time_s).inverse();
+    }
+  }
+  return estimates;
+}
+
+std::vector<FrameEstimate> Odometry::estimate(const FrameObservations& frame, const SecondaryObservations& secondary) {
   const int index = nextFrame_++;
   if (tracking_) {
     FrameEstimate estimate = track(frame, index, secondary);
@@ -47,7 +64,14 @@ std::vector<FrameEstimate> Odometry::process(const FrameObservations& frame, con
   // Frames buffered at multiples of the step are the initialiser's samples (a
   // failed attempt gives up a whole step, so they stay at multiples).
   const bool sampled = pending_.size() % static_cast<std::size_t>(options_.initializationStep) == 0;
-  pending_.push_back(sampled ? withSecondary(frame, secondary) : frame);
+  if (pending_.empty()) {
+    FrameObservations whole = withSecondary(frame, secondary);
+    const StereoStart start = lrsvo::startFromStereo(rig_, whole, options_.stereoStart);
+    if (start.usable) return {startFromStereo(whole, index, start)};
+    pending_.push_back(std::move(whole));
+  } else {
+    pending_.push_back(sampled ? withSecondary(frame, secondary) : frame);
+  }
   pendingIndices_.push_back(index);
   const int needed = (options_.initializer.frames - 1) * options_.initializationStep + 1;
   if (static_cast<int>(pending_.size()) < needed) return {};
@@ -59,7 +83,11 @@ std::vector<FrameEstimate> Odometry::finish() {
   for (std::size_t i = 0; i < pending_.size(); ++i) estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
   pending_.clear();
   pendingIndices_.clear();
-  return estimates;
+  return settled(std::move(estimates));
+}
+
+Eigen::Isometry3d Odometry::segmentPlacement(double time_s) const {
+  return motion_.known() ? motion_.predict(time_s) : Eigen::Isometry3d::Identity();
 }
 
 std::vector<int> Odometry::takeRejectedTracks() { return std::exchange(rejectedTracks_, {}); }
@@ -84,15 +112,19 @@ std::vector<FrameEstimate> Odometry::initialize() {
   std::vector<FrameEstimate> estimates;
   if (!result.success) {
     // Give up the oldest `step` frames and try again from the next one.
-    for (int i = 0; i < step; ++i) estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
+    for (int i = 0; i < step; ++i) {
+      estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
+      estimates.back().note = "initialisation failed: " + result.failure;
+    }
     pending_.erase(pending_.begin(), pending_.begin() + step);
     pendingIndices_.erase(pendingIndices_.begin(), pendingIndices_.begin() + step);
     estimates.front().times.initialize_ms = millisecondsSince(start);
     return estimates;
   }
 
-  // The new segment's world is its first camera; place it at the last tracked pose.
-  const Eigen::Isometry3d worldFromSegment = hasLastPose_ ? lastWorldFromCamera_ : Eigen::Isometry3d::Identity();
+  // The new segment's world is its first camera; place it where the last
+  // segment's motion, carried on, puts that camera.
+  const Eigen::Isometry3d worldFromSegment = segmentPlacement(pending_.front().time_s);
   const Eigen::Isometry3d segmentFromWorld = worldFromSegment.inverse();
   std::map<int, Eigen::Vector3d> points;
   for (const auto& [track, point] : result.points) points.emplace(track, worldFromSegment * point);
@@ -132,11 +164,33 @@ std::vector<FrameEstimate> Odometry::initialize() {
     estimates.push_back(estimate);
   }
   estimates.back().times.initialize_ms = initialize_ms;
-  lastWorldFromCamera_ = keyframes.back().cameraFromWorld.inverse();
-  hasLastPose_ = true;
   pending_.clear();
   pendingIndices_.clear();
   return estimates;
+}
+
+FrameEstimate Odometry::startFromStereo(const FrameObservations& frame, int index, const StereoStart& start) {
+  const auto begin = std::chrono::steady_clock::now();
+  // The new segment's world is this camera; place it where the last segment's motion, carried on, puts it.
+  const Eigen::Isometry3d worldFromSegment = segmentPlacement(frame.time_s);
+  std::map<int, Eigen::Vector3d> points;
+  for (const auto& [track, point] : start.points) points.emplace(track, worldFromSegment * point);
+  const Eigen::Isometry3d cameraFromWorld = worldFromSegment.inverse();
+  window_.reset({{index, cameraFromWorld, frame}}, std::move(points), rig_.extrinsics, start.scaleRelativeStd);
+  ++segment_;
+  tracking_ = true;
+  framesSinceKeyframe_ = 0;
+
+  FrameEstimate estimate = untracked(frame, index);
+  estimate.tracked = true;
+  estimate.keyframe = true;
+  estimate.segment = segment_;
+  estimate.cameraFromWorld = cameraFromWorld;
+  estimate.extrinsics = window_.extrinsicsAt(frame.time_s);
+  estimate.mapPoints = static_cast<int>(window_.points().size());
+  estimate.windowFrames = 1;
+  estimate.times.initialize_ms = millisecondsSince(begin);
+  return estimate;
 }
 
 bool Odometry::estimateFramePose(const FrameObservations& frame, int index, Eigen::Isometry3d& cameraFromWorld,
@@ -207,7 +261,6 @@ FrameEstimate Odometry::track(const FrameObservations& frame, int index, const S
   estimate.extrinsics = window_.extrinsicsAt(frame.time_s);
   estimate.mapPoints = static_cast<int>(window_.points().size());
   estimate.windowFrames = static_cast<int>(window_.keyframes().size());
-  lastWorldFromCamera_ = pose.inverse();
   return estimate;
 }
 

@@ -7,16 +7,21 @@
 
 #include "frontend/frame_estimate.h"
 #include "frontend/keyframe_policy.h"
+#include "frontend/motion_model.h"
 #include "frontend/observations.h"
 #include "frontend/odometry_options.h"
 #include "frontend/rig.h"
 #include "frontend/sliding_window.h"
+#include "frontend/stereo_start.h"
 
 namespace lrsvo {
 
 // The long-range stereo odometry loop (the paper's Fig. 8) over a stream of
 // feature observations (from the image front end or the feature simulator):
-//  - initialising: frames are buffered until the long-range initialiser has
+//  - starting: the first frame of an attempt is triangulated across the rig;
+//    where stereo sees depth (StereoStartOptions: close range, low flight)
+//    its stereo structure starts the map at once, with no wait for motion;
+//  - initialising: otherwise frames are buffered until the long-range initialiser has
 //    its N frames (one every initializationStep); on success every buffered
 //    frame gets a pose and the initialised frames fill the window; on failure
 //    the oldest buffered frames are given up (untracked) and it tries again;
@@ -26,7 +31,10 @@ namespace lrsvo {
 //    (poses, points, shared S: bounded, free or rigid) and the oldest
 //    keyframe retired;
 //  - too few pose inliers: tracking is lost; a fresh initialisation starts,
-//    and its segment is placed at the last tracked pose.
+//    and its segment is placed where the last one's constant velocity
+//    (motion_model.h) puts its first frame; frames without a pose within
+//    maxPrediction_s of the last measured one get that prediction, marked
+//    FrameEstimate::predicted.
 // The world is the first initialised base camera's frame, in metres.
 class Odometry {
  public:
@@ -40,6 +48,10 @@ class Odometry {
   // a frame that is kept (a keyframe, or a frame the initialiser samples); the
   // estimates are the same as for the whole frame.
   std::vector<FrameEstimate> process(const FrameObservations& frame, const SecondaryObservations& secondary = {});
+  // Passes over a frame that has nothing to measure (unusable images): it
+  // takes the next frame index, which is returned, and gets no estimate here;
+  // tracking goes on with the next frame as if this one had not been.
+  int skipFrame() { return nextFrame_++; }
   // Estimates of frames still buffered at the end of a sequence (untracked).
   std::vector<FrameEstimate> finish();
   // Tracks the odometry rejected since the last call (wrong matches): the
@@ -52,7 +64,15 @@ class Odometry {
   const SlidingWindow& window() const { return window_; }
 
  private:
+  std::vector<FrameEstimate> estimate(const FrameObservations& frame, const SecondaryObservations& secondary);
+  // Feeds the measured poses to the motion model and predicts the frames
+  // lost a short while since, in frame order.
+  std::vector<FrameEstimate> settled(std::vector<FrameEstimate> estimates);
+  // Where a new segment's first camera (at time t) goes: the motion so far carried on (identity at the start).
+  Eigen::Isometry3d segmentPlacement(double time_s) const;
   std::vector<FrameEstimate> initialize();
+  // Starts a segment from one frame's stereo structure (StereoStart::usable).
+  FrameEstimate startFromStereo(const FrameObservations& frame, int index, const StereoStart& start);
   FrameEstimate track(const FrameObservations& frame, int index, const SecondaryObservations& secondary);
   // Pose of a frame from its base observations of mapped points (nullopt-like: success flag).
   bool estimateFramePose(const FrameObservations& frame, int index, Eigen::Isometry3d& cameraFromWorld,
@@ -70,8 +90,7 @@ class Odometry {
   // Buffered while initialising: the frames and their indices.
   std::vector<FrameObservations> pending_;
   std::vector<int> pendingIndices_;
-  Eigen::Isometry3d lastWorldFromCamera_ = Eigen::Isometry3d::Identity();
-  bool hasLastPose_ = false;
+  ConstantVelocity motion_;  // of the measured poses
   std::vector<int> rejectedTracks_;
 };
 

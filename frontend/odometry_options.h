@@ -9,6 +9,7 @@
 #include "frontend/long_range_initializer.h"
 #include "frontend/outlier_threshold.h"
 #include "frontend/pose_estimator.h"
+#include "frontend/stereo_start.h"
 #include "frontend/triangulation.h"
 
 namespace lrsvo {
@@ -82,7 +83,14 @@ struct OdometryOptions {
   // Pose of every frame: P3P in MLESAC on base observations of mapped points.
   PoseEstimatorOptions pose;
   int minPoseInliers = 20;  // fewer: tracking is lost, and a new initialisation starts
+  // A frame without a measured pose (tracking lost) at most this long after
+  // the last measured one gets the constant-velocity prediction, marked as
+  // predicted: a short loss leaves no hole in the trajectory. 0: none.
+  double maxPrediction_s = 2.0;
 
+  // Where stereo sees depth (close range, low flight), the odometry starts at
+  // once from one frame's stereo structure instead (stereo_start.h).
+  StereoStartOptions stereoStart;
   // The long-range initialisation (its `frames` frames, one every
   // initializationStep frames: the paper takes 10 from 30).
   LongRangeInitializerOptions initializer;

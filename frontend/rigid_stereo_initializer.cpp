@@ -2,10 +2,10 @@
 
 #include <cstdio>
 #include <map>
-#include <set>
 #include <string>
 #include <utility>
 
+#include "frontend/stereo_start.h"
 #include "graph/error.h"
 #include "graph/optimizer.h"
 
@@ -18,24 +18,10 @@ std::string format(const char* pattern, double value) {
   return buffer;
 }
 
-// Triangulates every unmapped track that frame `frame` saw in its base camera
-// and in at least one secondary camera, with the calibrated extrinsics.
+// Adds the unmapped tracks of frame `frame` that its stereo pairs place, through the calibrated extrinsics.
 void triangulateStereo(SparseMap& map, const Rig& rig, const FrameObservations& observations, int frame,
                        const TriangulationOptions& options) {
-  const Eigen::Isometry3d& base = map.cameraFromWorld[frame];
-  std::map<int, std::vector<TriangulationView>> views;
-  std::set<int> seenByBase;
-  for (const Observation& observation : observations.observations) {
-    if (map.points.count(observation.track)) continue;
-    views[observation.track].push_back(
-        {rig.cameraFromWorld(base, observation.camera), rig.cameras[observation.camera].intrinsics, observation.pixel});
-    if (observation.camera == 0) seenByBase.insert(observation.track);
-  }
-  for (const auto& [track, trackViews] : views) {
-    if (!seenByBase.count(track) || trackViews.size() < 2) continue;
-    const TriangulationResult point = triangulate(trackViews, options);
-    if (point.valid) map.points[track] = point.point;
-  }
+  map.points.merge(triangulateAcrossRig(rig, map.cameraFromWorld[frame], observations, options, map.points));
 }
 
 void validate(const RigidStereoInitializerOptions& o) {

@@ -1,5 +1,6 @@
 #include "sim/flight.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -21,6 +22,16 @@ void validate(const FlightOptions& o) {
   check(std::isfinite(o.frameRate_hz) && o.frameRate_hz > 0.0, "frameRate_hz must be finite and > 0");
   check(o.frameStep >= 1, "frameStep must be >= 1");
   check(std::isfinite(o.attitudeNoise_rad) && o.attitudeNoise_rad >= 0.0, "attitudeNoise_rad must be >= 0");
+  for (const AttitudeStep& gust : o.gusts)
+    check(std::isfinite(gust.time_s) && gust.size_rad.allFinite() && gust.rise_s >= 0.0 && gust.hold_s >= 0.0 &&
+              std::isfinite(gust.rise_s + gust.hold_s),
+          "a gust needs a finite time and size, and finite rise_s and hold_s >= 0");
+}
+
+Eigen::Vector3d gustOffset(const std::vector<AttitudeStep>& gusts, double t) {
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+  for (const AttitudeStep& gust : gusts) offset += gust.weightAt(t) * gust.size_rad;
+  return offset;
 }
 
 // A smooth bounded wobble per axis (roll, pitch, yaw): three sinusoids of
@@ -75,6 +86,13 @@ Eigen::Isometry3d cameraFromWorld(const PathState& s, const Eigen::Vector3d& wob
 
 }  // namespace
 
+double AttitudeStep::weightAt(double t) const {
+  const double since = t - time_s, untilEnd = time_s + 2.0 * rise_s + hold_s - t;
+  if (since <= 0.0 || untilEnd <= 0.0) return 0.0;
+  if (rise_s == 0.0) return 1.0;
+  return std::min({1.0, since / rise_s, untilEnd / rise_s});
+}
+
 std::vector<FlightPose> simulateFlight(const FlightOptions& options) {
   validate(options);
   FlightPath path(options);
@@ -84,7 +102,7 @@ std::vector<FlightPose> simulateFlight(const FlightOptions& options) {
   std::vector<FlightPose> poses;
   for (long frame = 0; frame <= lastFrame; frame += options.frameStep) {
     const double t = static_cast<double>(frame) / options.frameRate_hz;
-    poses.push_back({t, cameraFromWorld(path.advanceTo(t), wobble.at(t))});
+    poses.push_back({t, cameraFromWorld(path.advanceTo(t), wobble.at(t) + gustOffset(options.gusts, t))});
   }
   return poses;
 }

@@ -21,6 +21,19 @@ struct FlightLeg {
   double climbRate_m_s = 0.0;   // Climb only
 };
 
+// A gust: the attitude steps by size_rad (roll, pitch, yaw) over rise_s from
+// time_s on, holds the step for hold_s, and returns as fast. A roll of
+// 12.75 deg within 0.1 s moves a nadir image by about f tan(12.75 deg): 380 px
+// at the paper's f = 1668 px.
+struct AttitudeStep {
+  double time_s = 0.0;
+  Eigen::Vector3d size_rad = Eigen::Vector3d::Zero();
+  double rise_s = 0.1;
+  double hold_s = 1.0;
+  // The step's share of size_rad at time t: 0 before and after it, 1 while held.
+  double weightAt(double t) const;
+};
+
 // World z up; the aircraft starts at (0, 0, altitude_m) heading along world
 // x and flies along its body x with the cameras looking down.
 struct FlightOptions {
@@ -32,6 +45,8 @@ struct FlightOptions {
   // Amplitude of a smooth seeded roll, pitch and yaw wobble on top of the
   // path's attitude (a few sinusoids of 2-10 s period per axis); 0: none.
   double attitudeNoise_rad = 0.0;
+  // Attitude steps on top of the wobble (their offsets add up).
+  std::vector<AttitudeStep> gusts;
   // Turns and climbs ramp their rate (and so bank and pitch) linearly in and
   // out over this time at each end of the leg, as an aircraft rolls into a
   // turn in about a second; 0: instantly. A turn's heading change is then

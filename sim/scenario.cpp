@@ -2,6 +2,7 @@
 
 #include <climits>
 #include <cmath>
+#include <numbers>
 #include <set>
 #include <string>
 #include <utility>
@@ -124,7 +125,71 @@ void readFlight(const cv::FileNode& node, FlightOptions& f) {
       f.legs.push_back(l);
     }
   }
+  const cv::FileNode gusts = r.get("gusts");
+  if (!gusts.empty()) {
+    if (!gusts.isSeq()) fail("flight.gusts", "must be a list of gusts");
+    f.gusts.clear();
+    for (std::size_t i = 0; i < gusts.size(); ++i) {
+      MapReader gust(gusts[static_cast<int>(i)], "flight.gusts[" + std::to_string(i) + "]");
+      AttitudeStep g;
+      gust.real("time_s", g.time_s);
+      gust.real("roll_rad", g.size_rad.x());
+      gust.real("pitch_rad", g.size_rad.y());
+      gust.real("yaw_rad", g.size_rad.z());
+      gust.real("rise_s", g.rise_s);
+      gust.real("hold_s", g.hold_s);
+      gust.finish();
+      f.gusts.push_back(g);
+    }
+  }
   r.finish();
+}
+
+std::vector<int> readFrameList(const cv::FileNode& node, const std::string& where) {
+  std::vector<int> frames;
+  if (node.empty()) return frames;
+  if (!node.isSeq()) fail(where, "must be a list of frame indices");
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const cv::FileNode frame = node[static_cast<int>(i)];
+    if (!frame.isInt()) fail(where, "must be a list of integer frame indices");
+    frames.push_back(static_cast<int>(frame));
+  }
+  return frames;
+}
+
+void readFaults(const cv::FileNode& node, FrameFaults& faults) {
+  MapReader r(node, "faults");
+  const cv::FileNode jumps = r.get("exposureJumps");
+  if (!jumps.empty()) {
+    if (!jumps.isSeq()) fail("faults.exposureJumps", "must be a list of {frame, gain}");
+    faults.exposureJumps.clear();
+    for (std::size_t i = 0; i < jumps.size(); ++i) {
+      MapReader jump(jumps[static_cast<int>(i)], "faults.exposureJumps[" + std::to_string(i) + "]");
+      FrameFaults::ExposureJump j;
+      jump.integer("frame", j.frame);
+      jump.real("gain", j.gain);
+      jump.finish();
+      faults.exposureJumps.push_back(j);
+    }
+  }
+  if (const cv::FileNode n = r.get("blankFrames"); !n.empty())
+    faults.blankFrames = readFrameList(n, "faults.blankFrames");
+  if (const cv::FileNode n = r.get("corruptFrames"); !n.empty())
+    faults.corruptFrames = readFrameList(n, "faults.corruptFrames");
+  if (const cv::FileNode n = r.get("droppedFrames"); !n.empty())
+    faults.droppedFrames = readFrameList(n, "faults.droppedFrames");
+  r.finish();
+  try {
+    faults.validate();
+  } catch (const Error& e) {
+    fail("faults", e.what());
+  }
+}
+
+void writeFrameList(cv::FileStorage& fs, const char* key, const std::vector<int>& frames) {
+  fs << key << "[:";
+  for (int frame : frames) fs << frame;
+  fs << "]";
 }
 
 void readTerrain(const cv::FileNode& node, TerrainOptions& t) {
@@ -270,6 +335,29 @@ SimScenario paperScenario() {
   return s;
 }
 
+SimScenario stressScenario() {
+  SimScenario s = demoScenario();
+  s.name = "stress";
+  FlightOptions& f = s.flight;
+  f.altitude_m = 60.0;
+  f.frameRate_hz = 15.0;
+  // Leg by leg (20 m/s; rates ramp over 1 s at each end): 7.5 s straight at
+  // 60 m; 22.5 s climbing to 150 m; a 10 s left turn at 150 m; 7.5 s
+  // straight; 25 s descending to 30 m; a 7.5 s right turn; 7.5 s straight.
+  f.legs = {{Kind::Straight, 150.0}, {Kind::Climb, 450.0, 0.0, 90.0 / 21.5}, {Kind::Turn, 200.0, 0.1},
+            {Kind::Straight, 150.0}, {Kind::Climb, 500.0, 0.0, -5.0},        {Kind::Turn, 150.0, -0.1},
+            {Kind::Straight, 150.0}};
+  // Roll steps of 12.75 deg within one frame into each turn, and back out of it.
+  const double roll = 12.75 * std::numbers::pi / 180.0, frame_s = 1.0 / f.frameRate_hz;
+  f.gusts = {{30.0, Eigen::Vector3d(roll, 0.0, 0.0), frame_s, 10.0 - frame_s},
+             {72.5, Eigen::Vector3d(-roll, 0.0, 0.0), frame_s, 7.5 - frame_s}};
+  s.faults.exposureJumps = {{200, 1.3}, {260, 1.0}, {700, 0.7}, {760, 1.0}};
+  s.faults.blankFrames = {400};
+  s.faults.corruptFrames = {900};
+  s.faults.droppedFrames = {1100};
+  return s;
+}
+
 SimScenario readScenarioYaml(const std::string& path) {
   cv::FileStorage fs;
   try {
@@ -285,8 +373,10 @@ SimScenario readScenarioYaml(const std::string& path) {
     const std::string name = base.isString() ? static_cast<std::string>(base) : "";
     if (name == "paper")
       s = paperScenario();
+    else if (name == "stress")
+      s = stressScenario();
     else if (name != "demo")
-      fail(path, "base must be demo or paper, got '" + name + "'");
+      fail(path, "base must be demo, paper or stress, got '" + name + "'");
   }
   const cv::FileNode name = root.get("name");
   s.name = name.isString() ? static_cast<std::string>(name) : path;
@@ -297,6 +387,7 @@ SimScenario readScenarioYaml(const std::string& path) {
   readDeformation(root.get("deformation"), s.deformation);
   readTexture(root.get("texture"), s.texture);
   readRender(root.get("render"), s.render);
+  readFaults(root.get("faults"), s.faults);
   root.finish();
   s.rig.validate();
   return s;
@@ -305,8 +396,9 @@ SimScenario readScenarioYaml(const std::string& path) {
 SimScenario loadScenario(const std::string& spec) {
   if (spec == "demo") return demoScenario();
   if (spec == "paper") return paperScenario();
+  if (spec == "stress") return stressScenario();
   if (spec.ends_with(".yaml") || spec.ends_with(".yml")) return readScenarioYaml(spec);
-  fail("'" + spec + "'", "unknown; expected demo, paper or a .yaml / .yml file");
+  fail("'" + spec + "'", "unknown; expected demo, paper, stress or a .yaml / .yml file");
 }
 
 void writeScenarioYaml(const SimScenario& s, const std::string& path) {
@@ -326,6 +418,13 @@ void writeScenarioYaml(const SimScenario& s, const std::string& path) {
     fs << "{:"
        << "kind" << kindName(leg.kind) << "length_m" << leg.length_m << "turnRate_rad_s" << leg.turnRate_rad_s
        << "climbRate_m_s" << leg.climbRate_m_s << "}";
+  fs << "]"
+     << "gusts"
+     << "[";
+  for (const AttitudeStep& g : f.gusts)
+    fs << "{:"
+       << "time_s" << g.time_s << "roll_rad" << g.size_rad.x() << "pitch_rad" << g.size_rad.y() << "yaw_rad"
+       << g.size_rad.z() << "rise_s" << g.rise_s << "hold_s" << g.hold_s << "}";
   fs << "]"
      << "}";
   const TerrainOptions& t = s.terrain;
@@ -376,6 +475,18 @@ void writeScenarioYaml(const SimScenario& s, const std::string& path) {
      << "{"
      << "noiseSigma_grey" << r.noiseSigma_grey << "blurSigma_px" << r.blurSigma_px << "exposureDrift" << r.exposureDrift
      << "exposurePeriod_s" << r.exposurePeriod_s << "vignetting" << r.vignetting << "threads" << r.threads << "}";
+  fs << "faults"
+     << "{"
+     << "exposureJumps"
+     << "[";
+  for (const FrameFaults::ExposureJump& jump : s.faults.exposureJumps)
+    fs << "{:"
+       << "frame" << jump.frame << "gain" << jump.gain << "}";
+  fs << "]";
+  writeFrameList(fs, "blankFrames", s.faults.blankFrames);
+  writeFrameList(fs, "corruptFrames", s.faults.corruptFrames);
+  writeFrameList(fs, "droppedFrames", s.faults.droppedFrames);
+  fs << "}";
 }
 
 }  // namespace lrsvo

@@ -6,6 +6,7 @@
 #include "frontend/rig.h"
 #include "sim/feature_simulator.h"
 #include "sim/flight.h"
+#include "sim/frame_faults.h"
 #include "sim/ground_texture.h"
 #include "sim/image_renderer.h"
 #include "sim/rig_deformation.h"
@@ -26,6 +27,7 @@ struct SimScenario {
   DeformationOptions deformation;
   GroundTextureOptions texture;
   RenderOptions render;
+  FrameFaults faults;  // what the camera link does to the frames (none by default)
   std::uint64_t seed = 1;
 };
 
@@ -37,6 +39,12 @@ SimScenario demoScenario();
 // ground, three turns, a slight attitude wobble, the rig deforming within
 // +-1 mm and +-0.01 rad of its calibration.
 SimScenario paperScenario();
+// "stress": what real flights bring, in one short flight over the demo's
+// world at 15 Hz: a climb from 60 m to 150 m, a stretch at 150 m, a
+// descent to 30 m and a stretch there, two turns, roll gusts of 12.75 deg
+// within a frame entering and leaving each turn, exposure jumps of +-30 %,
+// and a blank, a corrupt and a dropped frame.
+SimScenario stressScenario();
 
 // The scenario's world, flight and flexing rig as a feature-level simulation
 // (sim/feature_simulator.h): no images, `pointsPerFrame` scene points in
@@ -45,7 +53,7 @@ SimScenario paperScenario();
 FeatureSimulationOptions featureSimulationOptions(const SimScenario& scenario, int pointsPerFrame = 300,
                                                   double pixelNoise_px = 0.5);
 
-// A named scenario ("demo", "paper") or a YAML file (docs/simulator.md: every
+// A named scenario ("demo", "paper", "stress") or a YAML file (docs/simulator.md: every
 // key optional; `base: demo|paper` picks the starting point, default demo).
 // Throws lrsvo::Error on an unknown name, an unreadable file, an unknown key
 // (the message names it) or a value of the wrong type.

@@ -15,6 +15,9 @@ SimFrameSource::SimFrameSource(SimScenario scenario)
       truth_(simulateFlightTruth(scenario_.flight, terrain_, scenario_.rig, scenario_.deformation)),
       distortion_(scenario_.rig.cameras.size()) {
   scenario_.rig.validate();
+  scenario_.faults.validate();
+  for (int i = 0; i < flightFrames(); ++i)
+    if (!scenario_.faults.dropped(i)) delivered_.push_back(i);
 }
 
 StereoFrame SimFrameSource::render(int index) const {
@@ -25,16 +28,29 @@ StereoFrame SimFrameSource::render(int index) const {
 
 std::optional<StereoFrame> SimFrameSource::next() {
   if (next_ >= frameCount()) return std::nullopt;
-  const int index = next_++;
-  StereoFrame frame = renderBase(index);
-  frame.deferred = std::make_shared<DeferredImages>([this, index](int k) { return renderCamera(index, k); });
+  const int position = next_++;
+  const int index = delivered_[static_cast<std::size_t>(position)];
+  const FrameFaults& faults = scenario_.faults;
+  StereoFrame frame;
+  if (faults.corrupt(index) || faults.blank(index)) {
+    frame.time_s = truth_.times_s[index];
+    frame.images.resize(scenario_.rig.cameras.size());
+    if (faults.corrupt(index)) frame.defect = "corrupt image (a simulated fault)";
+    for (std::size_t k = 0; k < frame.images.size() && faults.blank(index); ++k)
+      frame.images[k] =
+          cv::Mat(scenario_.rig.cameras[k].height, scenario_.rig.cameras[k].width, CV_8UC1, cv::Scalar(128));
+  } else {
+    frame = renderBase(index);
+    frame.deferred = std::make_shared<DeferredImages>([this, index](int k) { return renderCamera(index, k); });
+  }
+  frame.index = position;
   return frame;
 }
 
 StereoFrame SimFrameSource::renderBase(int index) const {
-  if (index < 0 || index >= frameCount())
-    throw Error("sim source: frame " + std::to_string(index) + " outside the flight's " + std::to_string(frameCount()) +
-                " frames");
+  if (index < 0 || index >= flightFrames())
+    throw Error("sim source: frame " + std::to_string(index) + " outside the flight's " +
+                std::to_string(flightFrames()) + " frames");
   StereoFrame frame;
   frame.index = index;
   frame.time_s = truth_.times_s[index];
@@ -44,15 +60,19 @@ StereoFrame SimFrameSource::renderBase(int index) const {
 }
 
 cv::Mat SimFrameSource::renderCamera(int index, int camera) const {
-  return renderer_.render(scenario_.rig.cameras[camera], trueCameraFromWorld(truth_, index, camera),
-                          truth_.times_s[index], index, camera);
+  cv::Mat image = renderer_.render(scenario_.rig.cameras[camera], trueCameraFromWorld(truth_, index, camera),
+                                   truth_.times_s[index], index, camera);
+  const double gain = scenario_.faults.gainAt(index);
+  if (gain != 1.0) image.convertTo(image, CV_8U, gain);  // saturates at 255, as a sensor does
+  return image;
 }
 
 GroundTruth SimFrameSource::groundTruth() const {
   GroundTruth truth;
-  for (std::size_t i = 0; i < truth_.times_s.size(); ++i)
+  for (int i : delivered_) {
     truth.poses.push_back({truth_.times_s[i], truth_.cameraFromWorld[i].inverse()});
-  truth.extrinsics = truth_.extrinsics;
+    truth.extrinsics.push_back(truth_.extrinsics[i]);
+  }
   return truth;
 }
 

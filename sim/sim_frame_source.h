@@ -21,7 +21,11 @@ namespace lrsvo {
 // next() renders the base camera and defers the others until a frame's
 // image(k) asks (the odometry matches across the rig only on the frames it
 // keeps); the images do not depend on when or whether they are rendered.
-// rig() is the scenario's calibration; the images are undistorted.
+// rig() is the scenario's calibration; the images are undistorted. The
+// scenario's faults (FrameFaults) shape the stream: its frames are the
+// flight's frames less the dropped ones, numbered 0, 1, ... as delivered;
+// a corrupt frame comes without images and with its defect set, a blank one
+// with uniform images, and every image carries the exposure gain of its frame.
 class SimFrameSource : public FrameSource {
  public:
   // Flies the scenario (throws lrsvo::Error on bad options or a flight that
@@ -31,14 +35,15 @@ class SimFrameSource : public FrameSource {
   std::string name() const override { return "sim:" + scenario_.name; }
   const Rig& rig() const override { return scenario_.rig; }
   const std::vector<LensDistortion>& distortion() const override { return distortion_; }
-  int frameCount() const override { return static_cast<int>(truth_.times_s.size()); }
+  int frameCount() const override { return static_cast<int>(delivered_.size()); }
   std::optional<StereoFrame> next() override;
   void skip(int count) override { next_ = std::min(frameCount(), next_ + std::max(count, 0)); }
-  // The true base pose (world-from-camera) and secondary extrinsics of every frame.
+  // The true base pose (world-from-camera) and secondary extrinsics of every delivered frame.
   GroundTruth groundTruth() const override;
 
-  // Renders every camera of any frame (0 <= index < frameCount()),
-  // independently of next().
+  // Renders every camera of any frame of the flight (0 <= index < the
+  // flight's frame count, dropped ones included), with its exposure gain but
+  // no other fault, independently of next().
   StereoFrame render(int index) const;
   const SimScenario& scenario() const { return scenario_; }
   const FlightTruth& truth() const { return truth_; }
@@ -48,6 +53,7 @@ class SimFrameSource : public FrameSource {
  private:
   StereoFrame renderBase(int index) const;  // images[0] only
   cv::Mat renderCamera(int index, int camera) const;
+  int flightFrames() const { return static_cast<int>(truth_.times_s.size()); }
 
   SimScenario scenario_;
   Terrain terrain_;
@@ -55,7 +61,8 @@ class SimFrameSource : public FrameSource {
   ImageRenderer renderer_;
   FlightTruth truth_;
   std::vector<LensDistortion> distortion_;
-  int next_ = 0;
+  std::vector<int> delivered_;  // the flight's frames the stream delivers, in order
+  int next_ = 0;                // into delivered_
 };
 
 // The source for `lrsvo run sim:SPEC`: SPEC is "demo", "paper" or a YAML path

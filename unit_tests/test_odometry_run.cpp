@@ -1,3 +1,4 @@
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -21,10 +22,15 @@ namespace {
 
 using test::kEuroc;
 
-// Real EuRoC frames of a nearly still vehicle (~2 mm in 4.7 s): too little
-// parallax to initialise. The odometry must neither crash nor invent motion:
-// every frame it poses lies within centimetres of the first.
-TEST(OdometryRunEuroc, NearlyStillSequenceInventsNoMotion) {
+// Real EuRoC frames of a nearly still vehicle (~2 mm in 4.7 s), 1-5 m from a
+// room's walls: no parallax for a monocular start, but depths of 10-50
+// baselines that stereo sees well, so the odometry starts from the first
+// frame's stereo structure. At least 90 % of the frames are posed, and none
+// farther than 1 cm from the first: the 2 mm moved plus a pose's noise (170
+// points at ~3 m, 0.5 px at f = 458 px: about 3 m x 0.5 / 458 / sqrt(170),
+// 0.1 mm per axis, times a few for the geometry), with room to spare; an
+// invented motion or a drifting scale shows as centimetres.
+TEST(OdometryRunEuroc, NearlyStillSequenceIsPosedWithoutInventedMotion) {
   EurocSource source(kEuroc);
   const std::filesystem::path out = std::filesystem::path(testing::TempDir()) / "lrsvo_run_euroc";
   std::filesystem::remove_all(out);
@@ -34,9 +40,11 @@ TEST(OdometryRunEuroc, NearlyStillSequenceInventsNoMotion) {
   const RunResult run = runOdometry(source, options);
   EXPECT_EQ(run.totals.frames, source.frameCount());
   EXPECT_EQ(static_cast<int>(run.segments.size()), run.totals.frames);
-  EXPECT_GT(run.totals.frontEnd.tracked, 0);
+  EXPECT_GE(run.totals.tracked, 0.9 * run.totals.frames);
+  EXPECT_EQ(run.totals.segments, 1);
+  EXPECT_EQ(run.segments.front(), 0);  // posed from the first frame
   for (const Eigen::Isometry3d& pose : run.trajectory.worldFromCamera)
-    EXPECT_LT((pose.translation() - run.trajectory.worldFromCamera.front().translation()).norm(), 0.05);
+    EXPECT_LT((pose.translation() - run.trajectory.worldFromCamera.front().translation()).norm(), 0.01);
 
   const RunReport report = writeRunReport(out, run, source.groundTruth(), false);
   EXPECT_EQ(report.metrics["frames"], run.totals.frames);
@@ -73,7 +81,8 @@ TEST(OdometryRunSim, ShortRenderedFlightIsTrackedToTheEnd) {
   EXPECT_LT(report.metrics["final_position_error_m"].get<double>(), 0.05 * distance);
 }
 
-// Columns of a run's CSV file (the header skipped), as numbers (empty: 0).
+// Columns of a run's CSV file (the header skipped), as numbers (empty, or a
+// word such as frames.csv's status: 0).
 std::vector<std::vector<double>> csvRows(const std::filesystem::path& file) {
   std::ifstream in(file);
   std::vector<std::vector<double>> table;
@@ -82,7 +91,11 @@ std::vector<std::vector<double>> csvRows(const std::filesystem::path& file) {
   while (std::getline(in, line)) {
     std::stringstream fields(line);
     std::vector<double> row;
-    for (std::string field; std::getline(fields, field, ',');) row.push_back(field.empty() ? 0.0 : std::stod(field));
+    for (std::string field; std::getline(fields, field, ',');) {
+      char* end = nullptr;
+      const double value = std::strtod(field.c_str(), &end);
+      row.push_back(end == field.c_str() ? 0.0 : value);
+    }
     table.push_back(row);
   }
   return table;

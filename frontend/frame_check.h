@@ -1,0 +1,25 @@
+#pragma once
+
+#include <string>
+
+#include "frontend/frame_source.h"
+#include "frontend/rig.h"
+
+namespace lrsvo {
+
+struct FrameCheckOptions {
+  // An image whose grey levels spread less than this (standard deviation)
+  // holds nothing to track: a dropped frame sent as a uniform one, a lens
+  // cap, a saturated sensor. A textured scene, even dim, spreads by several
+  // levels, and sensor noise alone by about one.
+  double minGreyStd = 1.0;
+};
+
+// Why a frame's images cannot be used, or "" when they can: the source's own
+// verdict (StereoFrame::defect: a missing or undecodable file), a camera
+// count other than the rig's, or an image held in the frame that is empty,
+// not 8-bit grey, sized otherwise than its camera's calibration, or blank.
+// Deferred images are not made here (they are checked when made).
+std::string frameDefect(const StereoFrame& frame, const Rig& rig, const FrameCheckOptions& options = {});
+
+}  // namespace lrsvo
