@@ -97,8 +97,8 @@ void addRunCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("run", "Run the long-range stereo odometry on a stereo sequence");
   command
       ->add_option("source", options->source,
-                   "sim:demo | sim:paper | sim:stress | sim:FILE.yaml (a synthetic flight rendered on the fly), or a data set "
-                   "folder in the EuRoC (DIR/mav0) or KITTI odometry (DIR/image_0, calib.txt) layout; "
+                   "sim:demo | sim:paper | sim:stress | sim:FILE.yaml (a synthetic flight rendered on the fly), or a "
+                   "data set folder in the EuRoC (DIR/mav0) or KITTI odometry (DIR/image_0, calib.txt) layout; "
                    "euroc:DIR or kitti:DIR forces the layout")
       ->required();
   command->add_option("--out", options->out, "Output folder (default lrsvo_runs/<source>)");

@@ -106,7 +106,8 @@ std::unique_ptr<FrameSource> openSource(const std::string& spec) {
 
 FeatureLevelFlight simulateFeatureLevel(const std::string& spec) {
   if (spec.rfind("sim:", 0) != 0)
-    throw Error("--feature-level needs a sim: source (sim:demo, sim:paper, sim:stress, sim:FILE.yaml), not '" + spec + "'");
+    throw Error("--feature-level needs a sim: source (sim:demo, sim:paper, sim:stress, sim:FILE.yaml), not '" + spec +
+                "'");
   const SimScenario scenario = loadScenario(spec.substr(4));
   SimulatedSequence sequence = simulateSequence(featureSimulationOptions(scenario));
   FeatureLevelFlight flight{spec + " (feature level)", sequence.rig, std::move(sequence.frames), {}};

@@ -48,8 +48,6 @@ StopOnSignal::~StopOnSignal() {
 
 const std::atomic<bool>& StopOnSignal::requested() const { return stopRequested; }
 
-int StopOnSignal::signal() const { return stopSignal.load(); }
-
 void StopOnSignal::throwIfRequested() const {
   if (stopRequested.load()) throw Interrupted{stopSignal.load()};
 }

@@ -17,8 +17,6 @@ class StopOnSignal {
   StopOnSignal& operator=(const StopOnSignal&) = delete;
 
   const std::atomic<bool>& requested() const;
-  // The signal that asked, or 0.
-  int signal() const;
   // Throws Interrupted when a signal asked the command to stop.
   void throwIfRequested() const;
 };

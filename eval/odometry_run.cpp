@@ -28,6 +28,7 @@ void addTimings(FrontEndTimings& sum, const FrontEndTimings& t) {
   sum.added += t.added;
   sum.rejected += t.rejected;
   sum.stereoMatched += t.stereoMatched;
+  sum.realigned += t.realigned;
 }
 
 void addTimes(StageTimes& sum, const StageTimes& t) {

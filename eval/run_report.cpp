@@ -18,6 +18,7 @@ nlohmann::json runJson(const RunTotals& t) {
           {"frames_tracked", t.tracked},
           {"frames_predicted", t.predicted},
           {"frames_bad", t.badFrames},
+          {"frames_realigned", t.frontEnd.realigned},
           {"keyframes", t.keyframes},
           {"segments", t.segments},
           {"fps", t.fps()},

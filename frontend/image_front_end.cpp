@@ -88,6 +88,7 @@ FrameObservations ImageFrontEnd::track(const StereoFrame& frame) {
   timings_.detect_ms = statistics.detect_ms;
   timings_.track_ms = pyramid_ms + statistics.track_ms;
   timings_.added = statistics.added;
+  timings_.realigned = statistics.realigned;
 
   Clock::time_point stage = Clock::now();
   raw_.clear();

@@ -35,6 +35,7 @@ struct FrontEndTimings {
   int added = 0;          // new tracks
   int rejected = 0;       // dropped by the fundamental check
   int stereoMatched = 0;  // base tracks found in at least one secondary camera (when matched)
+  int realigned = 0;  // 1: the tracks were predicted by the whole image's shift (an abrupt motion); sums count frames
 };
 
 // From a rig's images to the observations the odometry consumes: features are

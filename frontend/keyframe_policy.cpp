@@ -6,9 +6,8 @@
 
 namespace lrsvo {
 
-bool KeyframePolicy::isKeyframe(const FrameObservations& lastKeyframe, const FrameObservations& frame,
-                                int framesSinceKeyframe) const {
-  if (framesSinceKeyframe >= options_.maxFrameGap) return true;
+bool KeyframePolicy::isKeyframe(const FrameObservations& lastKeyframe, const FrameObservations& frame) const {
+  if (frame.time_s - lastKeyframe.time_s >= options_.maxInterval_s - kFrameTimeSlack_s) return true;
   std::unordered_map<int, Eigen::Vector2d> previous;
   for (const Observation& observation : lastKeyframe.observations)
     if (observation.camera == 0) previous.emplace(observation.track, observation.pixel);

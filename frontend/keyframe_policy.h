@@ -11,8 +11,10 @@ struct KeyframePolicyOptions {
   double minMedianMotion_px = 30.0;
   // ... or once fewer than this fraction of the last keyframe's tracks remain.
   double minSharedFraction = 0.7;
-  // ... or after this many frames at most.
-  int maxFrameGap = 10;
+  // ... or once this long has passed since the last keyframe (10 frames at
+  // 30 Hz): a time, not a frame count, so that the window spans the same
+  // stretch of flight at any frame rate.
+  double maxInterval_s = 1.0 / 3.0;
 };
 
 // Decides whether a frame joins the sliding window, from its base-camera
@@ -22,8 +24,7 @@ class KeyframePolicy {
   explicit KeyframePolicy(KeyframePolicyOptions options = {}) : options_(options) {}
   const KeyframePolicyOptions& options() const { return options_; }
 
-  // `framesSinceKeyframe` counts from the last keyframe (1 = the next frame).
-  bool isKeyframe(const FrameObservations& lastKeyframe, const FrameObservations& frame, int framesSinceKeyframe) const;
+  bool isKeyframe(const FrameObservations& lastKeyframe, const FrameObservations& frame) const;
 
  private:
   KeyframePolicyOptions options_;

@@ -23,6 +23,11 @@ struct FrameObservations {
   std::vector<Observation> observations;
 };
 
+// Slack for "at least T after" between frame times: timestamps from a data
+// set carry microseconds of jitter, and n / rate in floating point misses T by
+// an ulp, so the frame due at T would fall just short of it.
+inline constexpr double kFrameTimeSlack_s = 1e-3;
+
 // The secondary cameras' observations of a frame given with its base
 // observations alone, fetched only when needed (Odometry::process).
 using SecondaryObservations = std::function<std::vector<Observation>()>;

@@ -61,20 +61,23 @@ std::vector<FrameEstimate> Odometry::estimate(const FrameObservations& frame, co
     if (estimate.tracked) return {estimate};
     // Lost: this frame starts the next initialisation.
   }
-  // Frames buffered at multiples of the step are the initialiser's samples (a
-  // failed attempt gives up a whole step, so they stay at multiples).
-  const bool sampled = pending_.size() % static_cast<std::size_t>(options_.initializationStep) == 0;
+  // The initialiser's samples: the first buffered frame, then each frame at
+  // least initializationInterval_s after the last sample (a failed attempt
+  // gives up the frames before its second sample, which then leads).
   if (pending_.empty()) {
     FrameObservations whole = withSecondary(frame, secondary);
     const StereoStart start = lrsvo::startFromStereo(rig_, whole, options_.stereoStart);
     if (start.usable) return {startFromStereo(whole, index, start)};
+    samples_.push_back(0);
     pending_.push_back(std::move(whole));
+  } else if (frame.time_s - pending_[samples_.back()].time_s >= options_.initializationInterval_s - kFrameTimeSlack_s) {
+    samples_.push_back(pending_.size());
+    pending_.push_back(withSecondary(frame, secondary));
   } else {
-    pending_.push_back(sampled ? withSecondary(frame, secondary) : frame);
+    pending_.push_back(frame);
   }
   pendingIndices_.push_back(index);
-  const int needed = (options_.initializer.frames - 1) * options_.initializationStep + 1;
-  if (static_cast<int>(pending_.size()) < needed) return {};
+  if (static_cast<int>(samples_.size()) < options_.initializer.frames) return {};
   return initialize();
 }
 
@@ -83,6 +86,7 @@ std::vector<FrameEstimate> Odometry::finish() {
   for (std::size_t i = 0; i < pending_.size(); ++i) estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
   pending_.clear();
   pendingIndices_.clear();
+  samples_.clear();
   return settled(std::move(estimates));
 }
 
@@ -102,22 +106,24 @@ FrameEstimate Odometry::untracked(const FrameObservations& frame, int index) con
 
 std::vector<FrameEstimate> Odometry::initialize() {
   const auto start = std::chrono::steady_clock::now();
-  const int step = options_.initializationStep;
   std::vector<FrameObservations> sampled;
-  for (std::size_t i = 0; i < pending_.size(); i += static_cast<std::size_t>(step)) sampled.push_back(pending_[i]);
+  for (std::size_t position : samples_) sampled.push_back(pending_[position]);
   LongRangeInitializerOptions initializerOptions = options_.initializer;
   initializerOptions.seed = options_.seed + static_cast<std::uint64_t>(pendingIndices_.front());
   const InitializationResult result = LongRangeInitializer(initializerOptions).initialize(rig_, sampled);
 
   std::vector<FrameEstimate> estimates;
   if (!result.success) {
-    // Give up the oldest `step` frames and try again from the next one.
-    for (int i = 0; i < step; ++i) {
+    // Give up the frames before the second sample and try again from it.
+    const std::size_t givenUp = samples_[1];
+    for (std::size_t i = 0; i < givenUp; ++i) {
       estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
       estimates.back().note = "initialisation failed: " + result.failure;
     }
-    pending_.erase(pending_.begin(), pending_.begin() + step);
-    pendingIndices_.erase(pendingIndices_.begin(), pendingIndices_.begin() + step);
+    pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(givenUp));
+    pendingIndices_.erase(pendingIndices_.begin(), pendingIndices_.begin() + static_cast<std::ptrdiff_t>(givenUp));
+    samples_.erase(samples_.begin());
+    for (std::size_t& position : samples_) position -= givenUp;
     estimates.front().times.initialize_ms = millisecondsSince(start);
     return estimates;
   }
@@ -130,22 +136,20 @@ std::vector<FrameEstimate> Odometry::initialize() {
   for (const auto& [track, point] : result.points) points.emplace(track, worldFromSegment * point);
   std::vector<Keyframe> keyframes;
   for (std::size_t i = 0; i < sampled.size(); ++i)
-    keyframes.push_back({pendingIndices_[i * static_cast<std::size_t>(step)],
-                         result.cameraFromWorld[i] * segmentFromWorld, sampled[i]});
+    keyframes.push_back({pendingIndices_[samples_[i]], result.cameraFromWorld[i] * segmentFromWorld, sampled[i]});
   window_.reset(keyframes, std::move(points), result.extrinsics, result.kappaRelativeStd);
   ++segment_;
   tracking_ = true;
-  framesSinceKeyframe_ = 0;
   const double initialize_ms = millisecondsSince(start);
 
-  for (std::size_t i = 0; i < pending_.size(); ++i) {
+  for (std::size_t i = 0, sample = 0; i < pending_.size(); ++i) {
     FrameEstimate estimate;
-    if (i % static_cast<std::size_t>(step) == 0) {
+    if (sample < samples_.size() && samples_[sample] == i) {
       estimate = untracked(pending_[i], pendingIndices_[i]);
       estimate.tracked = true;
       estimate.keyframe = true;
       estimate.segment = segment_;
-      estimate.cameraFromWorld = keyframes[i / static_cast<std::size_t>(step)].cameraFromWorld;
+      estimate.cameraFromWorld = keyframes[sample++].cameraFromWorld;
       estimate.extrinsics = window_.extrinsicsAt(pending_[i].time_s);
       estimate.windowRmsError_px = result.rmsReprojectionError_px;
       estimate.bundleIterations = result.summary.iterationCount();
@@ -166,6 +170,7 @@ std::vector<FrameEstimate> Odometry::initialize() {
   estimates.back().times.initialize_ms = initialize_ms;
   pending_.clear();
   pendingIndices_.clear();
+  samples_.clear();
   return estimates;
 }
 
@@ -179,7 +184,6 @@ FrameEstimate Odometry::startFromStereo(const FrameObservations& frame, int inde
   window_.reset({{index, cameraFromWorld, frame}}, std::move(points), rig_.extrinsics, start.scaleRelativeStd);
   ++segment_;
   tracking_ = true;
-  framesSinceKeyframe_ = 0;
 
   FrameEstimate estimate = untracked(frame, index);
   estimate.tracked = true;
@@ -238,11 +242,9 @@ FrameEstimate Odometry::track(const FrameObservations& frame, int index, const S
   }
   estimate.tracked = true;
   estimate.segment = segment_;
-  ++framesSinceKeyframe_;
   const Keyframe& last = window_.keyframes().back();
-  if (keyframePolicy_.isKeyframe(last.observations, frame, framesSinceKeyframe_)) {
+  if (keyframePolicy_.isKeyframe(last.observations, frame)) {
     estimate.keyframe = true;
-    framesSinceKeyframe_ = 0;
     window_.addKeyframe({index, pose, withSecondary(frame, secondary)});
     start = std::chrono::steady_clock::now();
     window_.triangulateNewTracks();

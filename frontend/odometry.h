@@ -22,7 +22,7 @@ namespace lrsvo {
 //    where stereo sees depth (StereoStartOptions: close range, low flight)
 //    its stereo structure starts the map at once, with no wait for motion;
 //  - initialising: otherwise frames are buffered until the long-range initialiser has
-//    its N frames (one every initializationStep); on success every buffered
+//    its N frames (one each initializationInterval_s); on success every buffered
 //    frame gets a pose and the initialised frames fill the window; on failure
 //    the oldest buffered frames are given up (untracked) and it tries again;
 //  - tracking: each frame's pose by P3P in MLESAC from base observations of
@@ -86,11 +86,11 @@ class Odometry {
   bool tracking_ = false;
   int nextFrame_ = 0;
   int segment_ = -1;
-  int framesSinceKeyframe_ = 0;
   // Buffered while initialising: the frames and their indices.
   std::vector<FrameObservations> pending_;
   std::vector<int> pendingIndices_;
-  ConstantVelocity motion_;  // of the measured poses
+  std::vector<std::size_t> samples_;  // the initialiser's samples: positions in pending_
+  ConstantVelocity motion_;           // of the measured poses
   std::vector<int> rejectedTracks_;
 };
 

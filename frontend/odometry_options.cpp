@@ -41,9 +41,11 @@ void OdometryOptions::validate() const {
   require(minTriangulationViews >= 2, "minTriangulationViews must be at least 2");
   require(minPoseInliers >= 4, "minPoseInliers must be at least 4");
   require(maxPrediction_s >= 0.0 && std::isfinite(maxPrediction_s), "maxPrediction_s must be finite and >= 0");
-  require(initializationStep >= 1, "initializationStep must be at least 1");
+  require(initializationInterval_s >= 0.0 && std::isfinite(initializationInterval_s),
+          "initializationInterval_s must be finite and >= 0");
   stereoStart.validate();
-  require(keyframes.maxFrameGap >= 1, "keyframes.maxFrameGap must be at least 1");
+  require(keyframes.maxInterval_s > 0.0 && std::isfinite(keyframes.maxInterval_s),
+          "keyframes.maxInterval_s must be finite and > 0");
   require(Registry<ConstraintMethod>::instance().contains(constraintMethod),
           "unknown constraint method '" + constraintMethod + "'");
   SolverOptions::fromName(solver);  // throws on an unknown name

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Runs `lrsvo run` on each stress condition and prints one Markdown table row per
 condition and build: ATE in % of the distance flown, path length over the true one,
-frames posed (measured; predicted ones in brackets), segments and the odometry's fps.
+frames posed (measured; predicted ones in brackets), segments, frames whose tracks the
+whole image's shift predicted, and the odometry's fps.
 
 Give one `--lrsvo` per build to compare; the builds take turns on each condition, so
 a drift in the machine's speed falls on both alike. Run from the repository's top:
@@ -28,6 +29,7 @@ CONDITIONS = [  # key, what, source, extra options
     ("bad_frames", "blank, corrupt, dropped frames", "sim:sim/scenarios/bad_frames.yaml", []),
     ("stress", "sim:stress (all of them, 30-150 m)", "sim:stress", []),
     ("euroc", "EuRoC V1_01 (real, still, 1-5 m)", EUROC, ["--min-depth", "0.5"]),
+    ("paper", "smooth (sim:paper, 9600 frames, 37-118 m)", "sim:paper", []),  # minutes a run
 ]
 
 
@@ -48,7 +50,8 @@ def run(lrsvo, source, extra, out):
         return f"{posed} posed, no metrics", wall
     ate = 100.0 * m["ate_rmse_m"] / m["distance_m"]
     ratio = 1.0 + m["path_length_error_percent"] / 100.0 if "path_length_error_percent" in m else float("nan")
-    return f"{ate:.3f} | {ratio:.4f} | {posed} | {m['segments']} | {m['fps']:.1f}", wall
+    realigned = m.get("frames_realigned", "-")
+    return f"{ate:.3f} | {ratio:.4f} | {posed} | {m['segments']} | {realigned} | {m['fps']:.1f}", wall
 
 
 def main():
@@ -59,8 +62,9 @@ def main():
     args = parser.parse_args()
     only = set(filter(None, args.only.split(",")))
     out = pathlib.Path(args.out)
-    print("| condition | build | ATE (% of distance) | path ratio | frames posed (+predicted) | segments | fps |")
-    print("|---|---|---|---|---|---|---|")
+    print("| condition | build | ATE (% of distance) | path ratio | frames posed (+predicted) | segments | realigned "
+          "| fps |")
+    print("|---|---|---|---|---|---|---|---|")
     for key, name, source, extra in CONDITIONS:
         if only and key not in only:
             continue

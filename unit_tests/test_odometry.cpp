@@ -76,20 +76,24 @@ double largestStepError(const std::vector<FrameEstimate>& estimates, const Simul
   return largest;
 }
 
-TEST(KeyframePolicy, MotionSharedTracksAndGap) {
+TEST(KeyframePolicy, MotionSharedTracksAndInterval) {
   FrameObservations last, frame;
+  last.time_s = 10.0;
+  frame.time_s = 10.0 + 1.0 / 30.0;
   for (int track = 0; track < 10; ++track) {
     last.observations.push_back({track, 0, Eigen::Vector2d(100.0 + track, 200.0)});
     frame.observations.push_back({track, 0, Eigen::Vector2d(110.0 + track, 200.0)});  // 10 px each
   }
-  KeyframePolicy policy({.minMedianMotion_px = 30.0, .minSharedFraction = 0.7, .maxFrameGap = 5});
-  EXPECT_FALSE(policy.isKeyframe(last, frame, 1));
-  EXPECT_TRUE(policy.isKeyframe(last, frame, 5));                 // the gap
+  KeyframePolicy policy({.minMedianMotion_px = 30.0, .minSharedFraction = 0.7, .maxInterval_s = 0.2});
+  EXPECT_FALSE(policy.isKeyframe(last, frame));
+  frame.time_s = 10.0 + 6.0 / 30.0;  // the interval, to an ulp
+  EXPECT_TRUE(policy.isKeyframe(last, frame));
+  frame.time_s = 10.0 + 1.0 / 30.0;
   for (Observation& o : frame.observations) o.pixel.x() += 25.0;  // 35 px
-  EXPECT_TRUE(policy.isKeyframe(last, frame, 1));
+  EXPECT_TRUE(policy.isKeyframe(last, frame));
   for (Observation& o : frame.observations) o.pixel.x() -= 25.0;
   frame.observations.resize(6);  // 60 % of the tracks remain
-  EXPECT_TRUE(policy.isKeyframe(last, frame, 1));
+  EXPECT_TRUE(policy.isKeyframe(last, frame));
 }
 
 TEST(OdometryOptions, RejectsInvalidSettings) {
@@ -117,7 +121,8 @@ TEST(OdometryFlight, BoundedExtrinsicTracksAFlexedRigWhereRigidStereoFails) {
   OdometryOptions options;
   const std::vector<FrameEstimate> bounded = runOver(sequence.frames, sequence.rig, options);
   ASSERT_EQ(bounded.size(), sequence.frames.size());
-  const int initialisation = (options.initializer.frames - 1) * options.initializationStep + 1;
+  // The initialisation's frames at 30 Hz: its samples 0.1 s (3 frames) apart.
+  const int initialisation = (options.initializer.frames - 1) * 3 + 1;
   for (std::size_t i = 0; i < bounded.size(); ++i) {
     EXPECT_EQ(bounded[i].frame, static_cast<int>(i));
     EXPECT_TRUE(bounded[i].tracked) << "frame " << i;
@@ -163,6 +168,32 @@ TEST(OdometryFlight, HeldKeyframesStopTheWindowJumpingAtLongRange) {
   EXPECT_LT(heldJump, 0.5 * aloneJump) << "held " << heldJump << " m, window alone " << aloneJump << " m";
   EXPECT_LT(heldEnd, 0.5 * aloneEnd) << "held " << heldEnd << ", window alone " << aloneEnd;
   EXPECT_LT(heldEnd, 0.02);
+}
+
+// The start samples frames 0.1 s apart at any frame rate, so it sees the same
+// stretch of flight at 10 Hz as at 30 Hz (every frame against every third),
+// and the flight ends as close to the truth as the 30 Hz flight above
+// requires (5 % of the distance: the long-range start's scale at 100 m).
+TEST(OdometryFlight, StartSamplesTheSameStretchOfFlightAtTenHertz) {
+  FeatureSimulationOptions options;
+  options.flight.altitude_m = 100.0;
+  options.flight.speed_m_s = 20.0;
+  options.flight.frameRate_hz = 10.0;
+  options.flight.legs = {{FlightLeg::Kind::Straight, 120.0}};
+  options.flight.attitudeNoise_rad = 0.01;
+  options.terrain.treeDensity_per_km2 = 0.0;
+  options.pixelNoise_px = 1.0;
+  options.deformation.offset << 5e-4, -4e-4, 3e-4, -3e-3, 4e-3, 5e-3;
+  const SimulatedSequence sequence = simulateSequence(options);
+  const OdometryOptions odometry;
+  const std::vector<FrameEstimate> estimates = runOver(sequence.frames, sequence.rig, odometry);
+  const int samples = odometry.initializer.frames;
+  for (int i = 0; i < samples; ++i) {
+    EXPECT_TRUE(estimates[i].tracked) << i;
+    EXPECT_TRUE(estimates[i].keyframe) << i;  // every frame of the start is a sample
+  }
+  EXPECT_EQ(std::count_if(estimates.begin(), estimates.end(), [](const FrameEstimate& e) { return !e.tracked; }), 0);
+  EXPECT_LT(finalErrorFraction(estimates, sequence), 0.05);
 }
 
 // Frames with nothing in them lose tracking; the odometry initialises afresh
