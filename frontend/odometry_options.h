@@ -95,8 +95,8 @@ struct OdometryOptions {
   // buffered and then each at least initializationInterval_s after the last
   // (the paper takes 10 of 30 frames at 30 Hz: 0.1 s apart). A time, not a
   // frame count, so that the start sees the same stretch of flight at any
-  // frame rate: at 10 Hz three frames apart, 0.3 s, it spanned three times
-  // the flight, and its scale came out 14 % off on the demo's flight.
+  // frame rate (three frames apart at 10 Hz, it spanned three times the
+  // flight, and its scale came out far worse).
   LongRangeInitializerOptions initializer;
   double initializationInterval_s = 0.1;
 

@@ -82,6 +82,25 @@ class MapReader {
   std::set<std::string> known_;
 };
 
+// Reads `key` of a map as a list of maps, each by `read(reader, item)`,
+// replacing `items` when the key is given.
+template <typename Item, typename Read>
+void readMapList(MapReader& parent, const std::string& key, const std::string& where, const char* what,
+                 std::vector<Item>& items, Read read) {
+  const cv::FileNode list = parent.get(key);
+  if (list.empty()) return;
+  if (!list.isSeq()) fail(where, std::string("must be a list of ") + what);
+  items.clear();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string itemWhere = where + "[" + std::to_string(i) + "]";
+    MapReader reader(list[static_cast<int>(i)], itemWhere);
+    Item item;
+    read(reader, item, itemWhere);
+    reader.finish();
+    items.push_back(item);
+  }
+}
+
 const char* kindName(Kind kind) {
   switch (kind) {
     case Kind::Straight: return "straight";
@@ -107,41 +126,22 @@ void readFlight(const cv::FileNode& node, FlightOptions& f) {
   r.real("attitudeNoise_rad", f.attitudeNoise_rad);
   r.real("transition_s", f.transition_s);
   r.seed("seed", f.seed);
-  const cv::FileNode legs = r.get("legs");
-  if (!legs.empty()) {
-    if (!legs.isSeq()) fail("flight.legs", "must be a list of legs");
-    f.legs.clear();
-    for (std::size_t i = 0; i < legs.size(); ++i) {
-      const std::string where = "flight.legs[" + std::to_string(i) + "]";
-      MapReader leg(legs[static_cast<int>(i)], where);
-      FlightLeg l;
-      const cv::FileNode kind = leg.get("kind");
-      if (kind.empty() || !kind.isString()) fail(where, "needs kind: straight, turn or climb");
-      l.kind = kindFromName(static_cast<std::string>(kind), where);
-      leg.real("length_m", l.length_m);
-      leg.real("turnRate_rad_s", l.turnRate_rad_s);
-      leg.real("climbRate_m_s", l.climbRate_m_s);
-      leg.finish();
-      f.legs.push_back(l);
-    }
-  }
-  const cv::FileNode gusts = r.get("gusts");
-  if (!gusts.empty()) {
-    if (!gusts.isSeq()) fail("flight.gusts", "must be a list of gusts");
-    f.gusts.clear();
-    for (std::size_t i = 0; i < gusts.size(); ++i) {
-      MapReader gust(gusts[static_cast<int>(i)], "flight.gusts[" + std::to_string(i) + "]");
-      AttitudeStep g;
-      gust.real("time_s", g.time_s);
-      gust.real("roll_rad", g.size_rad.x());
-      gust.real("pitch_rad", g.size_rad.y());
-      gust.real("yaw_rad", g.size_rad.z());
-      gust.real("rise_s", g.rise_s);
-      gust.real("hold_s", g.hold_s);
-      gust.finish();
-      f.gusts.push_back(g);
-    }
-  }
+  readMapList(r, "legs", "flight.legs", "legs", f.legs, [](MapReader& leg, FlightLeg& l, const std::string& where) {
+    const cv::FileNode kind = leg.get("kind");
+    if (kind.empty() || !kind.isString()) fail(where, "needs kind: straight, turn or climb");
+    l.kind = kindFromName(static_cast<std::string>(kind), where);
+    leg.real("length_m", l.length_m);
+    leg.real("turnRate_rad_s", l.turnRate_rad_s);
+    leg.real("climbRate_m_s", l.climbRate_m_s);
+  });
+  readMapList(r, "gusts", "flight.gusts", "gusts", f.gusts, [](MapReader& gust, AttitudeStep& g, const std::string&) {
+    gust.real("time_s", g.time_s);
+    gust.real("roll_rad", g.size_rad.x());
+    gust.real("pitch_rad", g.size_rad.y());
+    gust.real("yaw_rad", g.size_rad.z());
+    gust.real("rise_s", g.rise_s);
+    gust.real("hold_s", g.hold_s);
+  });
   r.finish();
 }
 
@@ -159,19 +159,11 @@ std::vector<int> readFrameList(const cv::FileNode& node, const std::string& wher
 
 void readFaults(const cv::FileNode& node, FrameFaults& faults) {
   MapReader r(node, "faults");
-  const cv::FileNode jumps = r.get("exposureJumps");
-  if (!jumps.empty()) {
-    if (!jumps.isSeq()) fail("faults.exposureJumps", "must be a list of {frame, gain}");
-    faults.exposureJumps.clear();
-    for (std::size_t i = 0; i < jumps.size(); ++i) {
-      MapReader jump(jumps[static_cast<int>(i)], "faults.exposureJumps[" + std::to_string(i) + "]");
-      FrameFaults::ExposureJump j;
-      jump.integer("frame", j.frame);
-      jump.real("gain", j.gain);
-      jump.finish();
-      faults.exposureJumps.push_back(j);
-    }
-  }
+  readMapList(r, "exposureJumps", "faults.exposureJumps", "{frame, gain}", faults.exposureJumps,
+              [](MapReader& jump, FrameFaults::ExposureJump& j, const std::string&) {
+                jump.integer("frame", j.frame);
+                jump.real("gain", j.gain);
+              });
   if (const cv::FileNode n = r.get("blankFrames"); !n.empty())
     faults.blankFrames = readFrameList(n, "faults.blankFrames");
   if (const cv::FileNode n = r.get("corruptFrames"); !n.empty())
@@ -207,23 +199,15 @@ void readTerrain(const cv::FileNode& node, TerrainOptions& t) {
 
 void readRig(const cv::FileNode& node, Rig& rig) {
   MapReader r(node, "rig");
-  const cv::FileNode cameras = r.get("cameras");
-  if (!cameras.empty()) {
-    if (!cameras.isSeq()) fail("rig.cameras", "must be a list of cameras");
-    rig.cameras.clear();
-    for (std::size_t i = 0; i < cameras.size(); ++i) {
-      MapReader c(cameras[static_cast<int>(i)], "rig.cameras[" + std::to_string(i) + "]");
-      Camera camera;
-      c.real("fx", camera.intrinsics.fx);
-      c.real("fy", camera.intrinsics.fy);
-      c.real("cx", camera.intrinsics.cx);
-      c.real("cy", camera.intrinsics.cy);
-      c.integer("width", camera.width);
-      c.integer("height", camera.height);
-      c.finish();
-      rig.cameras.push_back(camera);
-    }
-  }
+  readMapList(r, "cameras", "rig.cameras", "cameras", rig.cameras,
+              [](MapReader& c, Camera& camera, const std::string&) {
+                c.real("fx", camera.intrinsics.fx);
+                c.real("fy", camera.intrinsics.fy);
+                c.real("cx", camera.intrinsics.cx);
+                c.real("cy", camera.intrinsics.cy);
+                c.integer("width", camera.width);
+                c.integer("height", camera.height);
+              });
   const cv::FileNode extrinsics = r.get("extrinsics");
   if (!extrinsics.empty()) {
     if (!extrinsics.isSeq()) fail("rig.extrinsics", "must be a list of [x, y, z, roll, pitch, yaw]");
