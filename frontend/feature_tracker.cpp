@@ -42,10 +42,9 @@ cv::Point2f medianMotion(const std::vector<Track>& tracks) {
 
 }  // namespace
 
-KltImage FeatureTracker::withBrightnessFor(const KltImage& previous, const KltImage& next) const {
-  const double before = cv::mean(previous.image)[0], after = cv::mean(next.image)[0];
-  if (std::abs(after - before) <= options_.brightnessTolerance * before) return previous;
-  return makeKltImage(withBrightnessOf(previous.image, next.image), options_.klt);
+KltImage FeatureTracker::previousWithBrightnessOf(const KltImage& next, double nextMean) const {
+  if (std::abs(nextMean - previousMean_) <= options_.brightnessTolerance * previousMean_) return previous_;
+  return makeKltImage(withBrightnessOf(previous_.image, next.image), options_.klt);
 }
 
 FeatureTracker::FeatureTracker(const FeatureTrackerOptions& options) : options_(options), detector_(options.detector) {
@@ -73,7 +72,9 @@ const std::vector<Track>& FeatureTracker::track(const KltImage& image) {
     addNew(std::move(candidates), options_.targetFeatures - statistics_.tracked);
   } else {
     const auto trackStart = std::chrono::steady_clock::now();
-    followByKlt(image);
+    const double mean = cv::mean(image.image)[0];
+    followByKlt(image, mean);
+    previousMean_ = mean;
     statistics_.track_ms = millisecondsSince(trackStart);
     statistics_.tracked = static_cast<int>(tracks_.size());
     const int wanted = options_.targetFeatures - statistics_.tracked;
@@ -95,20 +96,21 @@ std::vector<cv::Point2f> FeatureTracker::predictedPixels() const {
   return predicted;
 }
 
-void FeatureTracker::followByKlt(const KltImage& image) {
+void FeatureTracker::followByKlt(const KltImage& image, double imageMean) {
   if (tracks_.empty()) return;
-  const KltImage from = withBrightnessFor(previous_, image);
+  const KltImage from = previousWithBrightnessOf(image, imageMean);
   const std::vector<cv::Point2f> points = pixelsOf(tracks_);
   std::vector<cv::Point2f> positions = predictedPixels();
   std::vector<bool> found = trackKlt(from, image, points, positions, options_.klt);
   const auto count = [](const std::vector<bool>& flags) { return std::count(flags.begin(), flags.end(), true); };
-  if (static_cast<double>(count(found)) < options_.realignBelowFraction * static_cast<double>(points.size())) {
+  const auto followed = count(found);
+  if (static_cast<double>(followed) < options_.realignBelowFraction * static_cast<double>(points.size())) {
     const cv::Point2f shift = globalShift(from, image).shift;
     std::vector<cv::Point2f> shifted;
     shifted.reserve(points.size());
     for (const cv::Point2f& p : points) shifted.push_back(p + shift);
     std::vector<bool> foundShifted = trackKlt(from, image, points, shifted, options_.klt);
-    if (count(foundShifted) > count(found)) {
+    if (count(foundShifted) > followed) {
       positions = std::move(shifted);
       found = std::move(foundShifted);
       statistics_.realigned = true;

@@ -75,10 +75,11 @@ class FeatureTracker {
   // Where each track should be in the next image: moved on by its last
   // motion, or a new track by the median motion of the others.
   std::vector<cv::Point2f> predictedPixels() const;
-  void followByKlt(const KltImage& image);
-  // `previous`, or, after an exposure step, its image brought to the
+  // `imageMean`: the image's mean grey level.
+  void followByKlt(const KltImage& image, double imageMean);
+  // The previous image, or, after an exposure step, that image brought to the
   // brightness of `next` (FeatureTrackerOptions::brightnessTolerance).
-  KltImage withBrightnessFor(const KltImage& previous, const KltImage& next) const;
+  KltImage previousWithBrightnessOf(const KltImage& next, double nextMean) const;
   void followByDescriptor(const DetectedFeatures& candidates);
   void addNew(DetectedFeatures features, int wanted);
 
@@ -86,6 +87,7 @@ class FeatureTracker {
   FeatureDetector detector_;
   std::vector<Track> tracks_;
   KltImage previous_;
+  double previousMean_ = 0.0;  // previous_'s mean grey level ("klt")
   int nextId_ = 0;
   TrackerStatistics statistics_;
 };

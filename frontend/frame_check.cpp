@@ -8,11 +8,7 @@ namespace lrsvo {
 namespace {
 
 std::string imageDefect(const cv::Mat& image, const Camera& camera, const FrameCheckOptions& options) {
-  if (image.empty()) return "no image";
-  if (image.type() != CV_8UC1) return "not an 8-bit grey image";
-  if (image.cols != camera.width || image.rows != camera.height)
-    return "the image is " + std::to_string(image.cols) + "x" + std::to_string(image.rows) + ", the calibration says " +
-           std::to_string(camera.width) + "x" + std::to_string(camera.height);
+  if (std::string defect = imageShapeDefect(image, camera); !defect.empty()) return defect;
   cv::Scalar mean, deviation;
   cv::meanStdDev(image, mean, deviation);
   if (deviation[0] < options.minGreyStd) {
@@ -24,6 +20,15 @@ std::string imageDefect(const cv::Mat& image, const Camera& camera, const FrameC
 }
 
 }  // namespace
+
+std::string imageShapeDefect(const cv::Mat& image, const Camera& camera) {
+  if (image.empty()) return "no image";
+  if (image.type() != CV_8UC1) return "not an 8-bit grey image";
+  if (image.cols != camera.width || image.rows != camera.height)
+    return "the image is " + std::to_string(image.cols) + "x" + std::to_string(image.rows) + ", the calibration says " +
+           std::to_string(camera.width) + "x" + std::to_string(camera.height);
+  return {};
+}
 
 std::string frameDefect(const StereoFrame& frame, const Rig& rig, const FrameCheckOptions& options) {
   if (!frame.defect.empty()) return frame.defect;

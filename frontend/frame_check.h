@@ -15,6 +15,10 @@ struct FrameCheckOptions {
   double minGreyStd = 1.0;
 };
 
+// What is wrong with an image's shape for a camera, or "" when nothing: empty,
+// not 8-bit grey, or sized otherwise than the camera's calibration.
+std::string imageShapeDefect(const cv::Mat& image, const Camera& camera);
+
 // Why a frame's images cannot be used, or "" when they can: the source's own
 // verdict (StereoFrame::defect: a missing or undecodable file), a camera
 // count other than the rig's, or an image held in the frame that is empty,

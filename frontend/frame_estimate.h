@@ -29,7 +29,7 @@ struct FrameEstimate {
   std::string note;  // why a frame has no pose, when known (a bad image, a failed initialisation)
   bool keyframe = false;
   // Tracked stretches between losses are numbered 0, 1, ...; each new one
-  // starts where the last tracked pose was (the trajectory marks the gap).
+  // starts where the last one's constant velocity carries it.
   int segment = -1;
   Eigen::Isometry3d cameraFromWorld = Eigen::Isometry3d::Identity();  // base camera
   std::vector<VertexStereoExtrinsic::Vector6> extrinsics;             // [k - 1]: the window's S when tracked

@@ -5,6 +5,7 @@
 #include <string>
 #include <unordered_set>
 
+#include "frontend/frame_check.h"
 #include "frontend/fundamental_check.h"
 #include "graph/error.h"
 
@@ -50,11 +51,10 @@ void ImageFrontEnd::checkFrame(const StereoFrame& frame) const {
 }
 
 void ImageFrontEnd::checkImage(int frameIndex, int camera, const cv::Mat& image) const {
-  const Camera& expected = rig_.cameras[static_cast<std::size_t>(camera)];
-  if (image.cols != expected.width || image.rows != expected.height || image.type() != CV_8UC1)
-    throw Error("image front end: frame " + std::to_string(frameIndex) + ", camera " + std::to_string(camera) +
-                ": expected an 8-bit grey image of " + std::to_string(expected.width) + "x" +
-                std::to_string(expected.height));
+  const std::string defect = imageShapeDefect(image, rig_.cameras[static_cast<std::size_t>(camera)]);
+  if (!defect.empty())
+    throw Error("image front end: frame " + std::to_string(frameIndex) + ", camera " + std::to_string(camera) + ": " +
+                defect);
 }
 
 int ImageFrontEnd::rejectOutliers(const std::vector<Track>& tracks, const std::vector<Eigen::Vector2d>& pixels) {

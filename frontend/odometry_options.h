@@ -94,9 +94,8 @@ struct OdometryOptions {
   // The long-range initialisation: its `frames` frames, the first one
   // buffered and then each at least initializationInterval_s after the last
   // (the paper takes 10 of 30 frames at 30 Hz: 0.1 s apart). A time, not a
-  // frame count, so that the start sees the same stretch of flight at any
-  // frame rate (three frames apart at 10 Hz, it spanned three times the
-  // flight, and its scale came out far worse).
+  // frame count, so that the start sees the same stretch of flight, and so the
+  // same geometry, at any frame rate.
   LongRangeInitializerOptions initializer;
   double initializationInterval_s = 0.1;
 

@@ -145,16 +145,18 @@ void readFlight(const cv::FileNode& node, FlightOptions& f) {
   r.finish();
 }
 
-std::vector<int> readFrameList(const cv::FileNode& node, const std::string& where) {
-  std::vector<int> frames;
-  if (node.empty()) return frames;
-  if (!node.isSeq()) fail(where, "must be a list of frame indices");
-  for (std::size_t i = 0; i < node.size(); ++i) {
-    const cv::FileNode frame = node[static_cast<int>(i)];
+// Reads `key` of the faults as a list of frame indices, replacing `frames` when the key is given.
+void readFrameList(MapReader& faults, const std::string& key, std::vector<int>& frames) {
+  const cv::FileNode list = faults.get(key);
+  if (list.empty()) return;
+  const std::string where = "faults." + key;
+  if (!list.isSeq()) fail(where, "must be a list of frame indices");
+  frames.clear();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const cv::FileNode frame = list[static_cast<int>(i)];
     if (!frame.isInt()) fail(where, "must be a list of integer frame indices");
     frames.push_back(static_cast<int>(frame));
   }
-  return frames;
 }
 
 void readFaults(const cv::FileNode& node, FrameFaults& faults) {
@@ -164,12 +166,9 @@ void readFaults(const cv::FileNode& node, FrameFaults& faults) {
                 jump.integer("frame", j.frame);
                 jump.real("gain", j.gain);
               });
-  if (const cv::FileNode n = r.get("blankFrames"); !n.empty())
-    faults.blankFrames = readFrameList(n, "faults.blankFrames");
-  if (const cv::FileNode n = r.get("corruptFrames"); !n.empty())
-    faults.corruptFrames = readFrameList(n, "faults.corruptFrames");
-  if (const cv::FileNode n = r.get("droppedFrames"); !n.empty())
-    faults.droppedFrames = readFrameList(n, "faults.droppedFrames");
+  readFrameList(r, "blankFrames", faults.blankFrames);
+  readFrameList(r, "corruptFrames", faults.corruptFrames);
+  readFrameList(r, "droppedFrames", faults.droppedFrames);
   r.finish();
   try {
     faults.validate();

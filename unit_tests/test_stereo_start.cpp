@@ -32,7 +32,7 @@ FrameObservations stereoFrameAt(const Rig& rig, double depth_m, int count, std::
 
 // Close range starts from stereo: its points come back at their depths, and
 // the scale's uncertainty is the rotation tolerance's (10 mrad) spread of the
-// disparities: q (z / b) / sqrt(3), 0.081 at 14 baselines.
+// disparities: q (z / b) / sqrt(3), 0.082 at 14 baselines.
 TEST(StereoStart, CloseRangeStartsFromStereo) {
   const Rig rig = paperRig();
   const StereoStart start = startFromStereo(rig, stereoFrameAt(rig, 10.0, 80, 1), StereoStartOptions{});
