@@ -29,6 +29,7 @@ void addTimings(FrontEndTimings& sum, const FrontEndTimings& t) {
   sum.rejected += t.rejected;
   sum.stereoMatched += t.stereoMatched;
   sum.realigned += t.realigned;
+  sum.revived += t.revived;
 }
 
 void addTimes(StageTimes& sum, const StageTimes& t) {
@@ -164,6 +165,7 @@ void OdometryPipeline::write(const FrameEstimate& estimate, const FrontEndTiming
   addTimes(totals.backEnd, estimate.times);
   totals.tracked += estimate.tracked;
   totals.predicted += estimate.predicted;
+  totals.relocalised += estimate.relocalised;
   totals.keyframes += estimate.keyframe;
   totals.segments = std::max(totals.segments, estimate.segment + 1);
   result_.segments.push_back(estimate.tracked ? estimate.segment : -1);

@@ -48,6 +48,7 @@ struct RunTotals {
   int segments = 0;
   int badFrames = 0;             // frames skipped for unusable images
   int predicted = 0;             // frames posed by the constant-velocity prediction through a loss
+  int relocalised = 0;           // frames that took up a lost segment again (FrameEstimate::relocalised)
   double frontEndSeconds = 0.0;  // features, tracking, stereo matching
   double backEndSeconds = 0.0;   // initialisation, pose, triangulation, window adjustment
   double sourceSeconds = 0.0;    // reading or rendering frames (not the odometry's), deferred images included

@@ -19,6 +19,8 @@ nlohmann::json runJson(const RunTotals& t) {
           {"frames_predicted", t.predicted},
           {"frames_bad", t.badFrames},
           {"frames_realigned", t.frontEnd.realigned},
+          {"tracks_revived", t.frontEnd.revived},
+          {"frames_relocalised", t.relocalised},
           {"keyframes", t.keyframes},
           {"segments", t.segments},
           {"fps", t.fps()},

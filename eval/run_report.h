@@ -20,7 +20,8 @@ struct RunReport {
 };
 
 // Writes metrics.json (frames, frames_tracked, frames_predicted, frames_bad,
-// frames_realigned (tracks predicted by the whole image's shift), segments,
+// frames_realigned (tracks predicted by the whole image's shift),
+// tracks_revived (found again after a break), frames_relocalised, segments,
 // stopped_early (RunOptions::stop ended the run), fps, time per stage,
 // and with the truth distance_m, ate_rmse_m, drift_percent,
 // scale_error_percent, ...) and the plots (trajectory against truth, position

@@ -59,7 +59,7 @@ RunWriter::RunWriter(const std::filesystem::path& outDir, const Rig& rig, Ground
   frames_ << "frame,time_s,tracked,keyframe,segment,features,tracked_features,new_features,stereo_matches,"
              "mapped_matches,pose_inliers,map_points,window_frames,window_rms_px,outlier_threshold_px,"
              "bundle_iterations,detect_ms,track_ms,stereo_ms,undistort_ms,initialize_ms,pose_ms,triangulate_ms,"
-             "bundle_ms,realigned,status,note\n";
+             "bundle_ms,realigned,revived,status,note\n";
 
   nlohmann::json rigJson;
   for (int k = 1; k <= rig.secondaryCount(); ++k)
@@ -79,8 +79,8 @@ void RunWriter::write(const FrameEstimate& e, const FrontEndTimings& f) {
          << ',' << e.poseInliers << ',' << e.mapPoints << ',' << e.windowFrames << ',' << e.windowRmsError_px << ','
          << e.outlierThreshold_px << ',' << e.bundleIterations << ',' << f.detect_ms << ',' << f.track_ms << ','
          << f.stereo_ms << ',' << f.undistort_ms << ',' << e.times.initialize_ms << ',' << e.times.pose_ms << ','
-         << e.times.triangulate_ms << ',' << e.times.bundle_ms << ',' << f.realigned << ',' << frameStatusName(e) << ','
-         << csvField(e.note) << '\n';
+         << e.times.triangulate_ms << ',' << e.times.bundle_ms << ',' << f.realigned << ',' << f.revived << ','
+         << frameStatusName(e) << ',' << csvField(e.note) << '\n';
   writeWhole(frames_, frames.str());
   if (!e.tracked && !e.predicted) return;
   const Eigen::Isometry3d worldFromCamera = e.cameraFromWorld.inverse();

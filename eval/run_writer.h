@@ -14,7 +14,7 @@ namespace lrsvo {
 //                  the frames predicted through a short tracking loss, each line ending `# predicted`;
 //  extrinsics.csv  per tracked frame and secondary camera, the estimated S and, when known, the true one;
 //  frames.csv      per frame: tracked, keyframe, segment, feature counts, window error, time per stage (ms),
-//                  realigned, status (frameStatusName) and note (why it has no pose);
+//                  realigned, revived, status (frameStatusName) and note (why it has no pose);
 //  rig.json        the calibration and the tolerances (the box the bounded S lives in).
 // Frames are numbered as the source numbers them: the run's frame i is the
 // source's frame firstFrame + i (a run may start part-way, RunOptions::firstFrame).

@@ -7,6 +7,7 @@
 #include <unordered_set>
 
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "graph/error.h"
 
@@ -58,9 +59,10 @@ FeatureTracker::FeatureTracker(const FeatureTrackerOptions& options) : options_(
     throw Error("feature tracker: descriptorRatio must lie in (0, 1]");
 }
 
-const std::vector<Track>& FeatureTracker::track(const KltImage& image) {
+const std::vector<Track>& FeatureTracker::track(const KltImage& image, double time_s) {
   statistics_ = {};
   for (Track& t : tracks_) ++t.age;
+  if (broken_ && time_s - broken_->time_s > options_.reviveWithin_s) broken_.reset();
   if (detector_.hasDescriptors()) {
     const auto detectStart = std::chrono::steady_clock::now();
     DetectedFeatures candidates = detector_.detect(image.image, {}, 2 * options_.targetFeatures);
@@ -74,6 +76,7 @@ const std::vector<Track>& FeatureTracker::track(const KltImage& image) {
     const auto trackStart = std::chrono::steady_clock::now();
     const double mean = cv::mean(image.image)[0];
     followByKlt(image, mean);
+    if (broken_) revive(image, mean);
     previousMean_ = mean;
     statistics_.track_ms = millisecondsSince(trackStart);
     statistics_.tracked = static_cast<int>(tracks_.size());
@@ -85,6 +88,7 @@ const std::vector<Track>& FeatureTracker::track(const KltImage& image) {
     }
   }
   previous_ = image;
+  previousTime_ = time_s;
   return tracks_;
 }
 
@@ -116,6 +120,10 @@ void FeatureTracker::followByKlt(const KltImage& image, double imageMean) {
       statistics_.realigned = true;
     }
   }
+  // A break within a break (a second unusable image) keeps the last good image.
+  if (!broken_ &&
+      static_cast<double>(count(found)) < options_.realignBelowFraction * static_cast<double>(points.size()))
+    broken_ = Broken{previous_.image, previousMean_, previousTime_, tracks_, nextId_, std::nullopt};
   std::vector<Track> kept;
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
     if (!found[i]) continue;
@@ -124,6 +132,51 @@ void FeatureTracker::followByKlt(const KltImage& image, double imageMean) {
     kept.back().motion = positions[i] - points[i];
   }
   tracks_ = std::move(kept);
+}
+
+void FeatureTracker::revive(const KltImage& image, double imageMean) {
+  Broken& broken = *broken_;
+  if (!broken.described) broken.described = describeImage(broken.image, options_.alignment);
+  const ImageAlignment alignment =
+      alignByDescriptors(*broken.described, describeImage(image.image, options_.alignment), options_.alignment);
+  if (!alignment.found) return;
+  // KLT from the old image warped onto the new one: the patches then agree in
+  // rotation and scale, which KLT's translation-only model needs.
+  const cv::Mat source = std::abs(imageMean - broken.mean) <= options_.brightnessTolerance * broken.mean
+                             ? broken.image
+                             : withBrightnessOf(broken.image, image.image);
+  cv::Mat warped;
+  cv::warpPerspective(source, warped, cv::Mat(alignment.homography), image.image.size(), cv::INTER_LINEAR,
+                      cv::BORDER_REPLICATE);
+  std::vector<cv::Point2f> points = transformedPixels(alignment.homography, pixelsOf(broken.tracks));
+  std::vector<cv::Point2f> positions = points;
+  const std::vector<bool> found = trackKlt(makeKltImage(warped, options_.klt), image, points, positions, options_.klt);
+  std::vector<Track> revived;
+  for (std::size_t i = 0; i < broken.tracks.size(); ++i) {
+    if (!found[i]) continue;
+    revived.push_back(broken.tracks[i]);
+    revived.back().pixel = positions[i];
+    revived.back().motion = cv::Point2f(0.0f, 0.0f);
+  }
+  // Every track of the old image takes the aligned position or is dropped:
+  // where most tracks broke, the few KLT kept may have locked onto the wrong
+  // spot. A track born since the break on the same spot as a revived one
+  // follows the same scene point under a new id: the revived one, which the
+  // map knows, replaces it.
+  std::unordered_set<int> old;
+  for (const Track& t : broken.tracks) old.insert(t.id);
+  const double min2 = options_.detector.minDistance_px * options_.detector.minDistance_px;
+  std::erase_if(tracks_, [&](const Track& t) {
+    if (old.count(t.id)) return true;
+    return t.id >= broken.firstNewId && std::any_of(revived.begin(), revived.end(), [&](const Track& r) {
+             const cv::Point2f d = r.pixel - t.pixel;
+             return d.dot(d) < min2;
+           });
+  });
+  statistics_.revived = static_cast<int>(revived.size());
+  tracks_.insert(tracks_.end(), revived.begin(), revived.end());
+  std::sort(tracks_.begin(), tracks_.end(), [](const Track& a, const Track& b) { return a.id < b.id; });
+  if (statistics_.revived >= options_.alignment.minInliers) broken_.reset();
 }
 
 // Each track takes the candidate with the nearest descriptor inside the search
@@ -201,12 +254,15 @@ void FeatureTracker::addNew(DetectedFeatures features, int wanted) {
 
 void FeatureTracker::drop(const std::vector<int>& ids) {
   const std::unordered_set<int> gone(ids.begin(), ids.end());
-  std::erase_if(tracks_, [&](const Track& t) { return gone.count(t.id) > 0; });
+  const auto dropped = [&](const Track& t) { return gone.count(t.id) > 0; };
+  std::erase_if(tracks_, dropped);
+  if (broken_) std::erase_if(broken_->tracks, dropped);
 }
 
 void FeatureTracker::reset() {
   tracks_.clear();
   previous_ = {};
+  broken_.reset();
 }
 
 }  // namespace lrsvo

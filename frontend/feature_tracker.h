@@ -1,10 +1,12 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
+#include "frontend/descriptor_alignment.h"
 #include "frontend/feature_detector.h"
 #include "frontend/klt.h"
 
@@ -30,6 +32,15 @@ struct FeatureTrackerOptions {
   // between frames (an exposure step), the previous image is brought to the
   // new one's brightness before tracking (KLT assumes it constant).
   double brightnessTolerance = 0.05;
+  // "klt": a break is a frame where even the shift keeps fewer than
+  // realignBelowFraction of the tracks (a yaw step rotates the image, an
+  // unusable image in between). The tracks of the last image before it are
+  // then looked for again, in that frame and each later one for up to
+  // reviveWithin_s: that image is aligned to the new one by ORB matches
+  // (descriptor_alignment.h), warped onto it, and KLT finds the lost tracks
+  // there, under their old ids, so the odometry's map still knows them.
+  DescriptorAlignmentOptions alignment;
+  double reviveWithin_s = 2.0;
   double descriptorSearch_px = 40.0;  // "descriptor": radius around the predicted position
   double descriptorRatio = 0.8;       // best distance below this times the second best
   int maxHamming = 64;                // "descriptor": worst accepted distance (of 256 bits)
@@ -52,6 +63,7 @@ struct TrackerStatistics {
   int tracked = 0;         // tracks continued from the previous frame
   int added = 0;           // new tracks detected this frame
   bool realigned = false;  // the tracks were predicted by the whole image's shift
+  int revived = 0;         // tracks of the image before a break found again (FeatureTrackerOptions::alignment)
   double track_ms = 0.0;
   double detect_ms = 0.0;
 };
@@ -63,8 +75,8 @@ class FeatureTracker {
  public:
   explicit FeatureTracker(const FeatureTrackerOptions& options);
   std::string mode() const { return detector_.hasDescriptors() ? "descriptor" : "klt"; }
-  // Follows the tracks into the next image, then tops them up.
-  const std::vector<Track>& track(const KltImage& image);
+  // Follows the tracks into the next image (taken at time_s), then tops them up.
+  const std::vector<Track>& track(const KltImage& image, double time_s = 0.0);
   const std::vector<Track>& tracks() const { return tracks_; }
   const TrackerStatistics& lastStatistics() const { return statistics_; }
   void drop(const std::vector<int>& ids);
@@ -75,8 +87,14 @@ class FeatureTracker {
   // Where each track should be in the next image: moved on by its last
   // motion, or a new track by the median motion of the others.
   std::vector<cv::Point2f> predictedPixels() const;
-  // `imageMean`: the image's mean grey level.
+  // `imageMean`: the image's mean grey level. A break keeps the tracks before
+  // it in broken_.
   void followByKlt(const KltImage& image, double imageMean);
+  // Finds broken_'s tracks again in `image` (FeatureTrackerOptions::alignment):
+  // when the images align, each takes its aligned position or is dropped.
+  // Forgets broken_ once enough are found (track() forgets it once
+  // reviveWithin_s has passed).
+  void revive(const KltImage& image, double imageMean);
   // The previous image, or, after an exposure step, that image brought to the
   // brightness of `next` (FeatureTrackerOptions::brightnessTolerance).
   KltImage previousWithBrightnessOf(const KltImage& next, double nextMean) const;
@@ -88,6 +106,17 @@ class FeatureTracker {
   std::vector<Track> tracks_;
   KltImage previous_;
   double previousMean_ = 0.0;  // previous_'s mean grey level ("klt")
+  double previousTime_ = 0.0;
+  // The last image before a break, with its tracks, while they are looked for.
+  struct Broken {
+    cv::Mat image;
+    double mean = 0.0;
+    double time_s = 0.0;
+    std::vector<Track> tracks;
+    int firstNewId = 0;                       // of the tracks born since
+    std::optional<DescribedImage> described;  // computed on the first search
+  };
+  std::optional<Broken> broken_;
   int nextId_ = 0;
   TrackerStatistics statistics_;
 };

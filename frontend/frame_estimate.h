@@ -26,6 +26,9 @@ struct FrameEstimate {
   // Not measured: cameraFromWorld is the constant-velocity prediction from the
   // last measured poses (tracking lost a short while before).
   bool predicted = false;
+  // Measured against the last segment's map after a loss (its tracks found
+  // again): the segment goes on, the frames in between are predicted.
+  bool relocalised = false;
   std::string note;  // why a frame has no pose, when known (a bad image, a failed initialisation)
   bool keyframe = false;
   // Tracked stretches between losses are numbered 0, 1, ...; each new one

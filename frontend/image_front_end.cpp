@@ -83,12 +83,13 @@ FrameObservations ImageFrontEnd::track(const StereoFrame& frame) {
   const Clock::time_point start = Clock::now();
   base_ = makeKltImage(baseImage, pyramid_);
   const double pyramid_ms = millisecondsSince(start);
-  tracker_.track(base_);
+  tracker_.track(base_, frame.time_s);
   const TrackerStatistics& statistics = tracker_.lastStatistics();
   timings_.detect_ms = statistics.detect_ms;
   timings_.track_ms = pyramid_ms + statistics.track_ms;
   timings_.added = statistics.added;
   timings_.realigned = statistics.realigned;
+  timings_.revived = statistics.revived;
 
   Clock::time_point stage = Clock::now();
   raw_.clear();

@@ -36,6 +36,7 @@ struct FrontEndTimings {
   int rejected = 0;       // dropped by the fundamental check
   int stereoMatched = 0;  // base tracks found in at least one secondary camera (when matched)
   int realigned = 0;  // 1: the tracks were predicted by the whole image's shift (an abrupt motion); sums count frames
+  int revived = 0;    // tracks of the image before a break found again by descriptor alignment
 };
 
 // From a rig's images to the observations the odometry consumes: features are

@@ -1,6 +1,7 @@
 #include "frontend/odometry.h"
 
 #include <chrono>
+#include <cstdio>
 #include <utility>
 
 #include "graph/error.h"
@@ -60,6 +61,9 @@ std::vector<FrameEstimate> Odometry::estimate(const FrameObservations& frame, co
     FrameEstimate estimate = track(frame, index, secondary);
     if (estimate.tracked) return {estimate};
     // Lost: this frame starts the next initialisation.
+  } else if (canRelocalise(frame.time_s)) {
+    FrameEstimate estimate = track(frame, index, secondary);
+    if (estimate.tracked) return relocalised(std::move(estimate));
   }
   // The initialiser's samples: the first buffered frame, then each frame at
   // least initializationInterval_s after the last sample (a failed attempt
@@ -88,6 +92,26 @@ std::vector<FrameEstimate> Odometry::finish() {
   pendingIndices_.clear();
   samples_.clear();
   return settled(std::move(estimates));
+}
+
+bool Odometry::canRelocalise(double time_s) const {
+  return !window_.points().empty() && motion_.known() && time_s - motion_.lastTime() <= options_.relocaliseWithin_s;
+}
+
+std::vector<FrameEstimate> Odometry::relocalised(FrameEstimate estimate) {
+  std::vector<FrameEstimate> estimates;
+  for (std::size_t i = 0; i < pending_.size(); ++i) estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
+  pending_.clear();
+  pendingIndices_.clear();
+  samples_.clear();
+  tracking_ = true;
+  estimate.relocalised = true;
+  char note[96];
+  std::snprintf(note, sizeof note, "relocalised against the map %.2f s after the last measured pose",
+                estimate.time_s - motion_.lastTime());
+  estimate.note = note;
+  estimates.push_back(std::move(estimate));
+  return estimates;
 }
 
 Eigen::Isometry3d Odometry::segmentPlacement(double time_s) const {

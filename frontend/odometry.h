@@ -30,11 +30,14 @@ namespace lrsvo {
 //    tracks seen in >= 3 keyframes are triangulated, the window is adjusted
 //    (poses, points, shared S: bounded, free or rigid) and the oldest
 //    keyframe retired;
-//  - too few pose inliers: tracking is lost; a fresh initialisation starts,
-//    and its segment is placed where the last one's constant velocity
-//    (motion_model.h) puts its first frame; frames without a pose within
-//    maxPrediction_s of the last measured one get that prediction, marked
-//    FrameEstimate::predicted.
+//  - too few pose inliers: tracking is lost. Each following frame within
+//    relocaliseWithin_s is first posed against the lost segment's map (the
+//    front end finds the old tracks again by descriptor alignment); a pose
+//    takes the segment up again (FrameEstimate::relocalised). Meanwhile a
+//    fresh initialisation starts, and its segment is placed where the last
+//    one's constant velocity (motion_model.h) puts its first frame; frames
+//    without a pose within maxPrediction_s of the last measured one get that
+//    prediction, marked FrameEstimate::predicted.
 // The world is the first initialised base camera's frame, in metres.
 class Odometry {
  public:
@@ -71,6 +74,11 @@ class Odometry {
   // Where a new segment's first camera (at time t) goes: the motion so far carried on (identity at the start).
   Eigen::Isometry3d segmentPlacement(double time_s) const;
   std::vector<FrameEstimate> initialize();
+  // A lost frame's pose against the lost segment's map: whether to try it.
+  bool canRelocalise(double time_s) const;
+  // The segment taken up again at `estimate`: the frames buffered since the
+  // loss are given up (settled() predicts them), then `estimate`.
+  std::vector<FrameEstimate> relocalised(FrameEstimate estimate);
   // Starts a segment from one frame's stereo structure (StereoStart::usable).
   FrameEstimate startFromStereo(const FrameObservations& frame, int index, const StereoStart& start);
   FrameEstimate track(const FrameObservations& frame, int index, const SecondaryObservations& secondary);

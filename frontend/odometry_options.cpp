@@ -41,6 +41,7 @@ void OdometryOptions::validate() const {
   require(minTriangulationViews >= 2, "minTriangulationViews must be at least 2");
   require(minPoseInliers >= 4, "minPoseInliers must be at least 4");
   require(maxPrediction_s >= 0.0 && std::isfinite(maxPrediction_s), "maxPrediction_s must be finite and >= 0");
+  require(relocaliseWithin_s >= 0.0 && std::isfinite(relocaliseWithin_s), "relocaliseWithin_s must be finite and >= 0");
   require(initializationInterval_s >= 0.0 && std::isfinite(initializationInterval_s),
           "initializationInterval_s must be finite and >= 0");
   stereoStart.validate();

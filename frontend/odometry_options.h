@@ -87,6 +87,11 @@ struct OdometryOptions {
   // the last measured one gets the constant-velocity prediction, marked as
   // predicted: a short loss leaves no hole in the trajectory. 0: none.
   double maxPrediction_s = 2.0;
+  // After a loss, each frame up to this long after the last measured pose is
+  // first posed against the lost segment's map (P3P in MLESAC on the tracks
+  // the front end found again, FeatureTrackerOptions::alignment); a pose takes
+  // the segment up again in the same world. 0: a loss always starts a new segment.
+  double relocaliseWithin_s = 2.0;
 
   // Where stereo sees depth (close range, low flight), the odometry starts at
   // once from one frame's stereo structure instead (stereo_start.h).

@@ -332,9 +332,13 @@ SimScenario stressScenario() {
             {Kind::Straight, 150.0}};
   // Roll steps of 12.75 deg within one frame into each turn, and back out of it.
   const double roll = 12.75 * std::numbers::pi / 180.0, frame_s = 1.0 / f.frameRate_hz;
+  // A yaw step of 30 deg within one frame on the straight at 150 m, held 2 s.
+  const double yaw = 30.0 * std::numbers::pi / 180.0;
   f.gusts = {{30.0, Eigen::Vector3d(roll, 0.0, 0.0), frame_s, 10.0 - frame_s},
+             {42.0, Eigen::Vector3d(0.0, 0.0, yaw), frame_s, 2.0 - frame_s},
              {72.5, Eigen::Vector3d(-roll, 0.0, 0.0), frame_s, 7.5 - frame_s}};
-  s.faults.exposureJumps = {{200, 1.3}, {260, 1.0}, {700, 0.7}, {760, 1.0}};
+  // Exposure steps of +-30 %, and two frames nearly black (4 %) descending.
+  s.faults.exposureJumps = {{200, 1.3}, {260, 1.0}, {700, 0.7}, {760, 1.0}, {1000, 0.04}, {1002, 1.0}};
   s.faults.blankFrames = {400};
   s.faults.corruptFrames = {900};
   s.faults.droppedFrames = {1100};

@@ -42,8 +42,9 @@ SimScenario paperScenario();
 // "stress": what real flights bring, in one short flight over the demo's
 // world at 15 Hz: a climb from 60 m to 150 m, a stretch at 150 m, a
 // descent to 30 m and a stretch there, two turns, roll gusts of 12.75 deg
-// within a frame entering and leaving each turn, exposure jumps of +-30 %,
-// and a blank, a corrupt and a dropped frame.
+// within a frame entering and leaving each turn, a yaw step of 30 deg within
+// a frame, exposure jumps of +-30 %, two frames nearly black, and a blank, a
+// corrupt and a dropped frame.
 SimScenario stressScenario();
 
 // The scenario's world, flight and flexing rig as a feature-level simulation

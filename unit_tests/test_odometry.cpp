@@ -196,19 +196,21 @@ TEST(OdometryFlight, StartSamplesTheSameStretchOfFlightAtTenHertz) {
   EXPECT_LT(finalErrorFraction(estimates, sequence), 0.05);
 }
 
-// Frames with nothing in them lose tracking; the odometry initialises afresh
-// afterwards, in a new segment placed where the first segment's constant
-// velocity carries its first camera, and the frames it could not pose within
-// maxPrediction_s of the loss are given that prediction, marked as such. The
-// flight is straight and level at 20 m/s: the placed camera is one frame's
-// flight (0.67 m) on from the last tracked one, along the same direction, to
-// the velocity's precision (poses differenced over 0.5 s; centimetres of pose
-// noise make a few percent of 10 m).
+// Frames with nothing in them lose tracking. Without relocalisation the
+// odometry initialises afresh afterwards, in a new segment placed where the
+// first segment's constant velocity carries its first camera, and the frames
+// it could not pose within maxPrediction_s of the loss are given that
+// prediction, marked as such. The flight is straight and level at 20 m/s: the
+// placed camera is one frame's flight (0.67 m) on from the last tracked one,
+// along the same direction, to the velocity's precision (poses differenced
+// over 0.5 s; centimetres of pose noise make a few percent of 10 m).
 TEST(OdometryFlight, RecoversFromTrackingLossInANewSegmentPlacedByItsMotion) {
   SimulatedSequence sequence = odometryFlight(100.0, 4);
   const int blackout = 70;
   for (int i = blackout; i < blackout + 3; ++i) sequence.frames[i].observations.clear();
-  const std::vector<FrameEstimate> estimates = runOver(sequence.frames, sequence.rig, OdometryOptions{});
+  OdometryOptions options;
+  options.relocaliseWithin_s = 0.0;
+  const std::vector<FrameEstimate> estimates = runOver(sequence.frames, sequence.rig, options);
   ASSERT_EQ(estimates.size(), sequence.frames.size());
   EXPECT_TRUE(estimates[blackout - 1].tracked);
   EXPECT_FALSE(estimates[blackout].tracked);
@@ -231,6 +233,50 @@ TEST(OdometryFlight, RecoversFromTrackingLossInANewSegmentPlacedByItsMotion) {
   EXPECT_GT(placed.normalized().dot(before.normalized()), std::cos(0.05));
 }
 
+// The same loss, but the tracks come back (as the front end finds them again
+// by descriptor alignment): the first frame that sees them is posed against
+// the lost segment's map, the segment goes on, and the frames of the loss are
+// predicted. Posed against the same map, the frame is as good as its tracked
+// neighbours: its position error is within that of the frames around it
+// (their largest, plus the 0.5 px noise's share over 20 m of flight: the
+// 5 cm the window's poses scatter by here).
+TEST(OdometryFlight, RelocalisesAgainstTheLostSegmentsMap) {
+  SimulatedSequence sequence = odometryFlight(100.0, 4);
+  const int blackout = 70;
+  for (int i = blackout; i < blackout + 3; ++i) sequence.frames[i].observations.clear();
+  const std::vector<FrameEstimate> estimates = runOver(sequence.frames, sequence.rig, OdometryOptions{});
+  ASSERT_EQ(estimates.size(), sequence.frames.size());
+  for (int i = blackout; i < blackout + 3; ++i) {
+    EXPECT_TRUE(estimates[i].predicted) << "frame " << i;
+    EXPECT_FALSE(estimates[i].relocalised) << "frame " << i;
+  }
+  const FrameEstimate& back = estimates[blackout + 3];
+  EXPECT_TRUE(back.tracked);
+  EXPECT_TRUE(back.relocalised);
+  EXPECT_FALSE(back.note.empty());
+  int relocalised = 0;
+  for (const FrameEstimate& e : estimates) {
+    relocalised += e.relocalised;
+    if (e.tracked) {
+      EXPECT_EQ(e.segment, 0) << "frame " << e.frame;
+    }
+  }
+  EXPECT_EQ(relocalised, 1);
+  ASSERT_TRUE(estimates.front().tracked);  // the odometry's world is frame 0's camera
+  auto centreInFirst = [](const Eigen::Isometry3d& cameraFromWorld, const Eigen::Isometry3d& firstFromWorld) {
+    return Eigen::Vector3d((cameraFromWorld * firstFromWorld.inverse()).inverse().translation());
+  };
+  auto error = [&](int i) {
+    return (centreInFirst(estimates[i].cameraFromWorld, estimates[0].cameraFromWorld) -
+            centreInFirst(sequence.trueCameraFromWorld[i], sequence.trueCameraFromWorld[0]))
+        .norm();
+  };
+  double neighbours = 0.0;
+  for (int i : {blackout - 3, blackout - 2, blackout - 1, blackout + 4, blackout + 5, blackout + 6})
+    neighbours = std::max(neighbours, error(i));
+  EXPECT_LT(error(blackout + 3), neighbours + 0.05);
+}
+
 // Given each frame's base observations and its secondary ones on request (as the
 // image front end gives them, stereo matching being costly), the odometry asks
 // only for the frames it keeps and estimates exactly what it does from whole frames.
@@ -238,13 +284,15 @@ TEST(OdometryFlight, FetchesSecondaryObservationsOnlyForTheFramesItKeeps) {
   SimulatedSequence sequence = odometryFlight(60.0, 4);
   const int blackout = 45;  // a loss, so a second initialisation samples frames too
   for (int i = blackout; i < blackout + 3; ++i) sequence.frames[i].observations.clear();
+  OdometryOptions options;
+  options.relocaliseWithin_s = 0.0;
   // Base observations first, as the split frames below will hold them.
   for (FrameObservations& frame : sequence.frames)
     std::stable_partition(frame.observations.begin(), frame.observations.end(),
                           [](const Observation& o) { return o.camera == 0; });
-  const std::vector<FrameEstimate> whole = runOver(sequence.frames, sequence.rig, OdometryOptions{});
+  const std::vector<FrameEstimate> whole = runOver(sequence.frames, sequence.rig, options);
 
-  Odometry odometry(sequence.rig, OdometryOptions{});
+  Odometry odometry(sequence.rig, options);
   std::vector<FrameEstimate> lazy;
   std::set<int> fetched;
   for (int i = 0; i < static_cast<int>(sequence.frames.size()); ++i) {

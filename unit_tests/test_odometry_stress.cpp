@@ -1,6 +1,7 @@
 // The odometry on short rendered flights with the stresses real flights bring,
 // one per test: a gust rolling the image by hundreds of pixels within a frame,
-// exposure jumps, and frames that cannot be used. Each flies the demo's world
+// a yaw step rotating it, exposure jumps, frames that cannot be used, and
+// dark frames that break every track. Each flies the demo's world
 // and flexing rig at 640x480 and 50 m, where the disparity (11.7 px) is the
 // full-size camera's at 100 m.
 //
@@ -60,6 +61,39 @@ TEST(OdometryRunSim, GustRollingTheImageWithinAFrameLosesNoFrame) {
   const double roll = 12.75 * M_PI / 180.0;
   scenario.flight.gusts = {{3.5, Eigen::Vector3d(roll, 0.0, 0.0), 0.1, 1.5}};
   expectTrackedThroughout(runStressFlight(scenario), 0);
+}
+
+// At 10 Hz, the aircraft yaws by 30 deg within one frame and back 1.5 s
+// later: the image rotates about its centre, moving its corners by up to
+// 200 px in different directions, which neither the tracks' own motion nor
+// the image's shift predicts. The descriptor alignment finds the tracks again
+// in the same frame.
+TEST(OdometryRunSim, YawStepRotatingTheImageWithinAFrameLosesNoFrame) {
+  SimScenario scenario = stressFlight(10.0, 140.0);
+  const double yaw = 30.0 * M_PI / 180.0;
+  scenario.flight.gusts = {{3.5, Eigen::Vector3d(0.0, 0.0, yaw), 0.1, 1.5}};
+  const StressRun stress = runStressFlight(scenario);
+  expectTrackedThroughout(stress, 0);
+  EXPECT_GT(stress.run.totals.frontEnd.revived, 0);
+}
+
+// At 30 Hz, one frame and then two in a row nearly black (10 % of the
+// exposure): they pass every check of a usable image but hold nothing to
+// track, so the odometry loses them; the first good frame after each finds
+// the old tracks again and is posed against the map. The dark frames are
+// predicted, and the flight stays one segment.
+TEST(OdometryRunSim, DarkFramesArePredictedAndTheSegmentGoesOn) {
+  SimScenario scenario = stressFlight(30.0, 60.0);
+  scenario.faults.exposureJumps = {{40, 0.1}, {41, 1.0}, {55, 0.1}, {57, 1.0}};
+  const StressRun stress = runStressFlight(scenario);
+  const RunTotals& totals = stress.run.totals;
+  EXPECT_EQ(totals.predicted, 3);
+  EXPECT_EQ(totals.tracked, totals.frames - 3);
+  EXPECT_EQ(totals.relocalised, 2);
+  EXPECT_EQ(totals.badFrames, 0);
+  EXPECT_EQ(totals.segments, 1);
+  ASSERT_TRUE(stress.metrics.contains("ate_rmse_m"));
+  EXPECT_LT(stress.metrics["ate_rmse_m"].get<double>(), 0.05 * stress.metrics["distance_m"].get<double>());
 }
 
 // At 15 Hz, the exposure steps by +30 %, back, then by -30 % and back, each

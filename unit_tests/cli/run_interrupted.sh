@@ -10,7 +10,7 @@ work=$2
 rm -rf "$work"
 mkdir -p "$work"
 
-frames_csv_fields=27
+frames_csv_fields=28
 fail() {
   echo "FAIL: $*" >&2
   exit 1
