@@ -29,6 +29,7 @@ struct EvalCommandOptions {
   int delta = 1;
   double deltaMeters = 100.0;
   bool allPairs = false;
+  std::string rpePath = "estimate";
   std::vector<double> segmentLengths = kittiSegmentLengths();
   double maxTimeDifference = 0.02;
   std::string out = "lrsvo_eval";
@@ -106,6 +107,7 @@ void runEvalCommand(const EvalCommandOptions& o) {
   options.rpeDeltaFrames = o.delta;
   options.rpeDelta_m = o.deltaMeters;
   options.rpeAllPairs = o.allPairs;
+  options.rpePath = o.rpePath == "truth" ? RpePath::kTruth : RpePath::kEstimate;
   options.driftLengths_m = o.segmentLengths;
   const TrajectoryMetrics metrics = computeTrajectoryMetrics(matched, options);
 
@@ -141,9 +143,11 @@ const char* kEvalFooter =
     "  ATE          position error |q_i - (s R p_i + t)| after Umeyama's least-squares alignment of the\n"
     "               positions: SE3 (s = 1) and, apart, Sim3 (scale s estimated, reported as sim3_scale).\n"
     "               RMSE, mean, median, max in m; orientation error angle(R_q^T R R_p) in deg.\n"
-    "  RPE          E = (Q_i^-1 Q_j)^-1 (P_i^-1 P_j) with j = i + delta frames (--delta) or j the first frame\n"
-    "               --delta-m metres along the truth; |t(E)| (m) and angle(E) (deg). Pairs chained like evo's\n"
-    "               default, or starting at every frame with --all-pairs. On the raw estimate (rigid moves cancel).\n"
+    "  RPE          E = (Q_i^-1 Q_j)^-1 (P_i^-1 P_j), |t(E)| (m) and angle(E) (deg), over evo's pairs: j = i +\n"
+    "               delta frames (--delta), or by --delta-m metres of path along the estimate (--rpe-path):\n"
+    "               chained, between the frames where the path walked since the last one reaches the step\n"
+    "               (the first where it first does), or with --all-pairs from every frame to the one whose\n"
+    "               path length from it is nearest the step, within 10 %. On the raw estimate.\n"
     "  KITTI drift  the devkit's evaluate_odometry: segments of 100, 200, ..., 800 m (--segment-lengths)\n"
     "               starting every 10th frame; per segment |t(E)| / length and angle(E) / length; the\n"
     "               average over all segments in % and deg/100 m, and per length.\n"
@@ -180,10 +184,15 @@ void addEvalCommand(CLI::App& app) {
   command->add_option("--delta", options->delta, "RPE step in frames")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command->add_option("--delta-m", options->deltaMeters, "RPE step in metres of path along the truth")
+  command->add_option("--delta-m", options->deltaMeters, "RPE step in metres of path (along --rpe-path)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command->add_flag("--all-pairs", options->allPairs, "RPE: a pair at every frame instead of chained pairs");
+  command
+      ->add_option("--rpe-path", options->rpePath,
+                   "Whose path --delta-m is measured along: estimate (evo's rule) or truth")
+      ->check(CLI::IsMember({"estimate", "truth"}))
+      ->capture_default_str();
   command
       ->add_option("--segment-lengths", options->segmentLengths,
                    "KITTI drift segment lengths in m, comma-separated (lengths longer than the truth are skipped)")

@@ -96,18 +96,36 @@ IndexPairs pairsByFrames(std::size_t poses, int delta, bool allPairs) {
   return pairs;
 }
 
-IndexPairs pairsByDistance(const Trajectory& truth, double delta_m, bool allPairs) {
+IndexPairs pairsByDistance(const Trajectory& path, double delta_m, bool allPairs, double relativeTolerance) {
   if (!(delta_m > 0.0)) throw Error("relative pose error: delta must be > 0 m, got " + std::to_string(delta_m));
-  const std::vector<double> distances = cumulativeDistances(truth);
   IndexPairs pairs;
-  for (std::size_t i = 0; i + 1 < distances.size();) {
-    const auto end = std::lower_bound(distances.begin() + static_cast<std::ptrdiff_t>(i) + 1, distances.end(),
-                                      distances[i] + delta_m);
-    if (end == distances.end()) break;
-    const auto j = static_cast<std::size_t>(end - distances.begin());
-    pairs.emplace_back(i, j);
-    i = allPairs ? i + 1 : j;
+  if (path.size() < 2) return pairs;
+  if (allPairs) {
+    const std::vector<double> distances = cumulativeDistances(path);
+    const double tolerance = relativeTolerance * delta_m;
+    for (std::size_t i = 0; i + 1 < distances.size(); ++i) {
+      // Path lengths from i only grow: the nearest to delta is at the first
+      // j reaching it or the one before.
+      const auto reach = std::lower_bound(distances.begin() + static_cast<std::ptrdiff_t>(i) + 1, distances.end(),
+                                          distances[i] + delta_m);
+      std::size_t best = static_cast<std::size_t>(reach - distances.begin());
+      if (best == distances.size() || (best > i + 1 && std::abs(distances[best - 1] - distances[i] - delta_m) <=
+                                                           std::abs(distances[best] - distances[i] - delta_m)))
+        --best;
+      if (std::abs(distances[best] - distances[i] - delta_m) <= tolerance) pairs.emplace_back(i, best);
+    }
+    return pairs;
   }
+  std::vector<std::size_t> marks;
+  double walked = 0.0;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    walked += (path.worldFromCamera[i].translation() - path.worldFromCamera[i - 1].translation()).norm();
+    if (walked >= delta_m) {
+      marks.push_back(i);
+      walked = 0.0;
+    }
+  }
+  for (std::size_t k = 0; k + 1 < marks.size(); ++k) pairs.emplace_back(marks[k], marks[k + 1]);
   return pairs;
 }
 
@@ -189,7 +207,9 @@ TrajectoryMetrics computeTrajectoryMetrics(const AssociatedTrajectories& matched
   metrics.rpeTranslation_m = errorStatistics(byFrames.translation_m);
   metrics.rpeRotation_rad = errorStatistics(byFrames.rotation_rad);
   const RelativePoseErrors byDistance =
-      relativePoseErrors(estimate, truth, pairsByDistance(truth, options.rpeDelta_m, options.rpeAllPairs));
+      relativePoseErrors(estimate, truth,
+                         pairsByDistance(options.rpePath == RpePath::kEstimate ? estimate : truth, options.rpeDelta_m,
+                                         options.rpeAllPairs));
   metrics.rpeDistanceTranslation_m = errorStatistics(byDistance.translation_m);
   metrics.rpeDistanceRotation_rad = errorStatistics(byDistance.rotation_rad);
 

@@ -30,13 +30,18 @@ double pathLength(const Trajectory& trajectory);
 std::vector<double> positionErrors(const Trajectory& estimate, const Trajectory& truth);
 std::vector<double> orientationErrors(const Trajectory& estimate, const Trajectory& truth);
 
-// Index pairs (i, j) over which relative poses are compared. By frames: j = i + delta.
-// By distance: j is the first frame whose path length from i along `truth` reaches
-// delta_m. `allPairs` starts a pair at every frame; otherwise the pairs are
-// chained, each starting where the last ended (evo's default).
+// Index pairs (i, j) over which relative poses are compared, as evo defines
+// them (its filters for `--delta_unit f` and `m`). By frames: j = i + delta;
+// `allPairs` starts a pair at every frame, otherwise the pairs are chained.
+// By distance, along `path` (evo: the estimate): chained, the path is walked
+// from its first pose and a mark set each time the length walked since the
+// last mark (or the start) reaches delta_m; the pairs join consecutive marks,
+// so the first starts where the path first reaches delta_m. With `allPairs`,
+// each i pairs with the later j whose path length from i is nearest delta_m,
+// when within relativeTolerance * delta_m of it.
 using IndexPairs = std::vector<std::pair<std::size_t, std::size_t>>;
 IndexPairs pairsByFrames(std::size_t poses, int delta, bool allPairs);
-IndexPairs pairsByDistance(const Trajectory& truth, double delta_m, bool allPairs);
+IndexPairs pairsByDistance(const Trajectory& path, double delta_m, bool allPairs, double relativeTolerance = 0.1);
 
 // Relative pose errors E = (Q_i^-1 Q_j)^-1 (P_i^-1 P_j), P the estimate and Q
 // the truth: |translation of E| (m) and the rotation angle of E (rad) per pair.
@@ -65,10 +70,15 @@ std::vector<double> kittiSegmentLengths();  // 100, 200, ..., 800 m
 KittiDrift kittiDrift(const Trajectory& estimate, const Trajectory& truth, const std::vector<double>& lengths_m,
                       int stepFrames = 10);
 
+// Whose path the RPE's distance step is measured along: the estimate's, as
+// evo does, or the truth's (independent of the estimate's errors).
+enum class RpePath { kEstimate, kTruth };
+
 struct TrajectoryMetricsOptions {
   int rpeDeltaFrames = 1;
   double rpeDelta_m = 100.0;
   bool rpeAllPairs = false;
+  RpePath rpePath = RpePath::kEstimate;
   std::vector<double> driftLengths_m = kittiSegmentLengths();
 };
 

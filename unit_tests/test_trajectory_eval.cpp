@@ -164,10 +164,34 @@ TEST(TrajectoryEvalMetrics, OneWrongStepShowsInTheRelativePoseErrors) {
   EXPECT_EQ(pairsByFrames(10, 2, true).size(), 8u);
 }
 
+// evo's pairs by distance. Chained: marks where the path walked since the
+// last mark reaches delta (3, 6, 9 for 3 m), pairs between consecutive marks.
+// All pairs: the j whose path length from i is nearest delta, within 10 % of
+// it (2.5 m: 2 and 3 m are as near; the first, 2 m, is off by 20 %: none;
+// 2.8 m: 3 m, off by 0.2 m, within 0.28 m, for i = 0..7).
 TEST(TrajectoryEvalMetrics, RelativePosePairsByDistance) {
   const Trajectory line = straightLine(11, 1.0);  // 0, 1, ..., 10 m
-  EXPECT_EQ(pairsByDistance(line, 3.0, false), (IndexPairs{{0, 3}, {3, 6}, {6, 9}}));
-  EXPECT_EQ(pairsByDistance(line, 2.5, true).size(), 8u);  // i = 0..7 reach i + 3 <= 10
+  EXPECT_EQ(pairsByDistance(line, 3.0, false), (IndexPairs{{3, 6}, {6, 9}}));
+  EXPECT_TRUE(pairsByDistance(line, 2.5, true).empty());
+  const IndexPairs all = pairsByDistance(line, 2.8, true);
+  ASSERT_EQ(all.size(), 8u);
+  for (std::size_t i = 0; i < all.size(); ++i) EXPECT_EQ(all[i], (std::pair<std::size_t, std::size_t>{i, i + 3}));
+}
+
+// The step is measured along the estimate's path by default (evo's rule): an
+// estimate 2x too long reaches 4 m after 2 true metres.
+TEST(TrajectoryEvalMetrics, RelativePoseStepFollowsTheChosenPath) {
+  const Trajectory truth = straightLine(11, 1.0);
+  const Trajectory estimate = straightLine(11, 2.0);
+  TrajectoryMetricsOptions options;
+  options.rpeDelta_m = 4.0;
+  const TrajectoryMetrics alongEstimate = computeTrajectoryMetrics({estimate, truth}, options);
+  options.rpePath = RpePath::kTruth;
+  const TrajectoryMetrics alongTruth = computeTrajectoryMetrics({estimate, truth}, options);
+  EXPECT_EQ(alongEstimate.rpeDistanceTranslation_m.count, 4u);  // marks 2, 4, 6, 8, 10
+  EXPECT_EQ(alongTruth.rpeDistanceTranslation_m.count, 1u);     // marks 4, 8
+  EXPECT_NEAR(alongEstimate.rpeDistanceTranslation_m.rmse, 2.0, 1e-12);
+  EXPECT_NEAR(alongTruth.rpeDistanceTranslation_m.rmse, 4.0, 1e-12);
 }
 
 TEST(TrajectoryEvalMetrics, KittiDriftOfAStraightLineWithOnePercentScaleError) {
@@ -347,6 +371,21 @@ TEST(TrajectoryEvalKitti00, MatchesOrbSlam2PublishedNumbers) {
   EXPECT_NEAR(m.drift.translation_percent, 0.70, 0.05);
   EXPECT_NEAR(m.drift.rotation_deg_per_100m, 0.25, 0.05);
   EXPECT_NEAR(m.ate_m.rmse, 1.3, 0.2);
+}
+
+// evo_rpe on the same files, `--delta 10 --delta_unit m` (consecutive pairs along
+// the estimate's path), prints RMSE 0.2263 m over 353 pairs; it rounds to 4
+// digits, so ours is within half a unit of the last one.
+TEST(TrajectoryEvalKitti00, RelativePoseErrorOverTenMetresMatchesEvo) {
+  const std::string folder = std::string(LRSVO_SHARED_DATA) + "/kitti00_poses/";
+  if (!std::filesystem::exists(folder + "KITTI_00_gt.txt")) GTEST_SKIP() << "no " << folder;
+  const Trajectory truth = readKittiTrajectory(folder + "KITTI_00_gt.txt", folder + "KITTI_00_gt_times.txt");
+  const Trajectory estimate = readKittiTrajectory(folder + "KITTI_00_ORB.txt", folder + "KITTI_00_gt_times.txt");
+  TrajectoryMetricsOptions options;
+  options.rpeDelta_m = 10.0;
+  const TrajectoryMetrics m = computeTrajectoryMetrics(associateByIndex(estimate, truth), options);
+  EXPECT_EQ(m.rpeDistanceTranslation_m.count, 353u);
+  EXPECT_NEAR(m.rpeDistanceTranslation_m.rmse, 0.2263, 0.5e-4);
 }
 
 }  // namespace

@@ -3,11 +3,16 @@
 # moves about 2 mm in 4.7 s): exit status 0, at least 90 % of the frames posed
 # (the stereo start needs no motion), and no pose farther than 1 cm from the
 # first (an odometry must not invent motion the stereo rig cannot see).
+# Exits 77 (skipped) without the data.
 # Usage: run_euroc.sh LRSVO EUROC_DIR WORK_DIR
 set -euo pipefail
 lrsvo=$1
 euroc=$2
 out=$3
+if [[ ! -d "$euroc/mav0" ]]; then
+  echo "SKIP: no $euroc/mav0 (../shared/data is not beside the repository)"
+  exit 77
+fi
 rm -rf "$out"
 "$lrsvo" run "$euroc" --min-depth 0.5 --no-plot --quiet --out "$out"
 python3 - "$out" <<'PY'
