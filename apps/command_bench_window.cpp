@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <iterator>
 #include <limits>
@@ -59,7 +60,9 @@ struct BenchWindowOptions {
   double barrierMu = ConstraintSettings{}.barrierMu;
   int barrierRounds = ConstraintSettings{}.barrierRounds;
   bool kitti = true;
-  std::string kittiDirectory = std::string(LRSVO_SHARED_DATA) + "/gtsam_stereo_vo";
+  // Relative to the working directory: the repository's top, with the shared data beside it.
+  std::string kittiDirectory = "../shared/data/gtsam_stereo_vo";
+  bool kittiDirectoryGiven = false;
   std::string json;
 };
 
@@ -512,7 +515,11 @@ void runBenchWindow(const BenchWindowOptions& o) {
   }
 
   const std::vector<Contender> kitti = kittiContenders(contenders);
-  if (o.kitti && !kitti.empty()) {
+  const bool kittiFound = std::filesystem::is_directory(o.kittiDirectory);
+  if (o.kitti && !kitti.empty() && !kittiFound && !o.kittiDirectoryGiven)
+    std::cout << "problem " << kKittiProblem << ": left out, no " << o.kittiDirectory
+              << " here (run from the repository's top, or give --kitti-dir)\n";
+  if (o.kitti && !kitti.empty() && (kittiFound || o.kittiDirectoryGiven)) {
     StereoVoProblem vo = loadGtsamStereoVo(o.kittiDirectory);
     nlohmann::ordered_json fields;
     fields["poses"] = vo.poses.size();
@@ -588,10 +595,17 @@ void addBenchWindow(CLI::App& app) {
   command->add_option("--barrier-rounds", o->barrierRounds, "log_barrier: rounds, mu x 0.1 after each")
       ->capture_default_str();
   command->add_flag("!--no-kitti", o->kitti, "Leave out the KITTI problem");
-  command->add_option("--kitti-dir", o->kittiDirectory, "Directory of the KITTI problem (GTSAM StereoVOExample)")
-      ->capture_default_str();
+  CLI::Option* kittiDirectory =
+      command
+          ->add_option("--kitti-dir", o->kittiDirectory,
+                       "Directory of the KITTI problem (GTSAM StereoVOExample); by default looked for relative to "
+                       "the working directory, and left out when absent")
+          ->capture_default_str();
   command->add_option("--json", o->json, "Also write the results as a JSON list to FILE");
-  command->callback([o] { runBenchWindow(*o); });
+  command->callback([o, kittiDirectory] {
+    o->kittiDirectoryGiven = kittiDirectory->count() > 0;
+    runBenchWindow(*o);
+  });
 }
 
 }  // namespace

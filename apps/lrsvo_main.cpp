@@ -4,8 +4,8 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/command.h"
+#include "apps/failure_report.h"
 #include "apps/stop_on_signal.h"
-#include "graph/error.h"
 
 namespace lrsvo::cli {
 std::vector<Command>& commands() {
@@ -24,12 +24,14 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
-  } catch (const lrsvo::Error& e) {
-    std::cerr << "lrsvo: error: " << e.what() << '\n';
-    return 1;
   } catch (const lrsvo::cli::Interrupted& stopped) {
     std::cerr << "lrsvo: stopped by signal " << stopped.signal << " with the outputs written\n";
     return 128 + stopped.signal;
+  } catch (...) {
+    const auto chosen = app.get_subcommands();
+    std::cerr << lrsvo::cli::failureLine(chosen.empty() ? "" : chosen.front()->get_name(), std::current_exception())
+              << '\n';
+    return 1;
   }
   return 0;
 }

@@ -34,7 +34,9 @@ std::string plottingPython() {
 std::filesystem::path plottingScript(const std::string& name) {
   std::vector<std::filesystem::path> places;
   if (const char* dir = std::getenv("LRSVO_PLOTS_DIR")) places.emplace_back(dir);
-  places.emplace_back(std::filesystem::path(LRSVO_SOURCE_DIR) / "eval" / "plots");
+  std::error_code noProgram;
+  const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", noProgram);
+  if (!noProgram) places.emplace_back(program.parent_path().parent_path() / "share" / "lrsvo" / "plots");
   places.emplace_back(std::filesystem::path(LRSVO_INSTALL_DATADIR) / "plots");
   for (const auto& place : places) {
     const std::filesystem::path script = place / (name + ".py");

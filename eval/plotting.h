@@ -11,8 +11,10 @@ namespace lrsvo {
 // the first that can import matplotlib. Empty when none can.
 std::string plottingPython();
 
-// The plotting script eval/plots/<name>.py: looked for in $LRSVO_PLOTS_DIR, the
-// source tree, then the install tree. Empty when none has it.
+// The plotting script eval/plots/<name>.py: looked for in $LRSVO_PLOTS_DIR,
+// then in share/lrsvo/plots beside the running program's bin/ (the build tree
+// holds a copy there, as the install tree does), then under the install
+// prefix. Empty when none has it.
 std::filesystem::path plottingScript(const std::string& name);
 
 // The shell command that runs `script` with `arguments` under `python`, every word quoted.

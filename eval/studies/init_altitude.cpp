@@ -40,7 +40,24 @@ struct Trial {
   double altitude_m;
   std::string method;
   InitializationScore score;
+  double scaleStd;  // the initialiser's own relative std of its scale (kappa's marginal)
 };
+
+// How far the scale came out, in the initialiser's own standard deviations
+// (estimated over true distance, minus one, over kappaRelativeStd), as the
+// RMS over the trials that succeeded: about 1 when that std is honest, so
+// that the errors are what the flight's information allows.
+double scaleErrorInStds(const std::vector<const Trial*>& trials) {
+  double sum = 0.0;
+  int n = 0;
+  for (const Trial* t : trials) {
+    if (!t->score.success || !(t->scaleStd > 0.0) || !std::isfinite(t->score.scaleRatio)) continue;
+    const double z = (1.0 / t->score.scaleRatio - 1.0) / t->scaleStd;
+    sum += z * z;
+    ++n;
+  }
+  return n > 0 ? std::sqrt(sum / n) : std::numeric_limits<double>::quiet_NaN();
+}
 
 InitializationResult runMethod(const std::string& method, const SimulatedSequence& sequence, std::uint64_t seed) {
   if (method == "long-range") {
@@ -106,10 +123,10 @@ StudyReport runInitAltitude(const StudyOptions& options) {
   report.addSetting("rigid_stereo",
                     "RigidStereoInitializer defaults: first-pair triangulation, P3P-MLESAC, BA with S fixed");
 
-  StudyTable& trialTable =
-      report.addTable("init_altitude_trials.csv",
-                      {"altitude_m", "speed_m_s", "trial", "method", "success", "reached_end", "distance_flown_m",
-                       "final_error_m", "raw_final_error_m", "final_error_percent", "scale_ratio", "failure"});
+  StudyTable& trialTable = report.addTable(
+      "init_altitude_trials.csv",
+      {"altitude_m", "speed_m_s", "trial", "method", "success", "reached_end", "distance_flown_m", "final_error_m",
+       "raw_final_error_m", "final_error_percent", "scale_ratio", "scale_std", "failure"});
   std::vector<Trial> all;
   const int steps = static_cast<int>(altitudes.size()) * trials;
   int step = 0;
@@ -126,13 +143,13 @@ StudyReport runInitAltitude(const StudyOptions& options) {
         const SimulatedSequence& sequence = variant.flexed ? flexedSequence : exactSequence;
         const InitializationResult result = runMethod(variant.initializer, sequence, flight.seed);
         const InitializationScore score = scoreInitialization(sequence, flight.frames, result);
-        all.push_back({altitude, variant.name, score});
+        all.push_back({altitude, variant.name, score, result.kappaRelativeStd});
         trialTable.addRow(std::vector<std::string>{
             format("%g", altitude), format("%g", flight.speed_m_s), std::to_string(trial), variant.name,
             score.success ? "1" : "0", score.reachedEnd ? "1" : "0", format("%.4f", score.distanceFlown_m),
             format("%.6g", score.finalPositionError_m), format("%.6g", score.rawFinalPositionError_m),
             format("%.6g", 100.0 * score.finalPositionError_m / score.distanceFlown_m),
-            format("%.6g", score.scaleRatio), score.failure});
+            format("%.6g", score.scaleRatio), format("%.6g", result.kappaRelativeStd), score.failure});
       }
       ++step;
       options.progress(static_cast<double>(step) / steps, format("%g m, trial %d of %d", altitude, trial + 1, trials));
@@ -143,6 +160,9 @@ StudyReport runInitAltitude(const StudyOptions& options) {
       "init_altitude.csv", {"altitude_m", "method", "trials", "successes", "mean_error_m", "std_error_m",
                             "median_error_m", "max_error_m", "mean_error_percent", "max_error_percent", "within_5m"});
   std::map<std::pair<std::string, double>, AltitudeSummary> summaries;
+  std::map<double, std::vector<const Trial*>> longRangeTrials;  // flexed rig, by altitude
+  for (const Trial& t : all)
+    if (t.method == "long-range") longRangeTrials[t.altitude_m].push_back(&t);
   for (const Variant& variant : kVariants)
     for (double altitude : altitudes) {
       std::vector<const Trial*> subset;
@@ -199,6 +219,20 @@ StudyReport runInitAltitude(const StudyOptions& options) {
       {"long-range: first altitude with a trial > 2 % of distance",
        firstAltitude("long-range", [](const AltitudeSummary& s) { return s.maxPercent > 100.0 * kGoalFraction; }), nan,
        "m", "beyond the paper; NaN: every trial met it up to 150 m"});
+  // Whether the long-range start errs by what its flight's information
+  // allows: its scale errors in its own standard deviations, and that std.
+  for (double altitude : {kPaperMaxAltitude_m, kMaxAltitude_m}) {
+    const std::vector<const Trial*>& trialsThere = longRangeTrials.at(altitude);
+    std::vector<double> stds;
+    for (const Trial* t : trialsThere)
+      if (std::isfinite(t->scaleStd)) stds.push_back(t->scaleStd);
+    report.addCheck({format("long-range: scale error in its own std at %g m (RMS)", altitude),
+                     scaleErrorInStds(trialsThere), nan, "std",
+                     "about 1: the errors are what the information allows (kappa's marginal std)"});
+    report.addCheck({format("long-range: kappa's relative std at %g m (median)", altitude),
+                     stds.empty() ? nan : 100.0 * SortedSample(stds).median(), nan, "%",
+                     "the scale's std from the information; the final error in % of distance follows it"});
+  }
   report.setSeconds(stopwatch.seconds());
   return report;
 }

@@ -1,9 +1,10 @@
 # The consumer_find_package test, run as `cmake -D... -P check_find_package.cmake`:
 # installs lrsvo from its build tree into a scratch prefix, then configures, builds
 # and runs the consumer project against that prefix, as a user of the package would.
-# Needs LRSVO_BUILD_DIR (a complete build), CONFIG, WORK_DIR, CONSUMER_SOURCE_DIR,
-# GENERATOR and CXX_COMPILER.
-foreach(var LRSVO_BUILD_DIR CONFIG WORK_DIR CONSUMER_SOURCE_DIR GENERATOR CXX_COMPILER)
+# Also checks that nothing installed holds a path into the source or build tree.
+# Needs LRSVO_SOURCE_DIR, LRSVO_BUILD_DIR (a complete build), CONFIG, WORK_DIR,
+# CONSUMER_SOURCE_DIR, GENERATOR and CXX_COMPILER.
+foreach(var LRSVO_SOURCE_DIR LRSVO_BUILD_DIR CONFIG WORK_DIR CONSUMER_SOURCE_DIR GENERATOR CXX_COMPILER)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "consumer test: ${var} is not set")
   endif()
@@ -28,6 +29,20 @@ endfunction()
 
 run("installing lrsvo into ${prefix} (is the build in ${LRSVO_BUILD_DIR} complete?)"
   "${CMAKE_COMMAND}" --install "${LRSVO_BUILD_DIR}" ${config_args} --prefix "${prefix}")
+# An installed program or library must not depend on where it was built: no
+# path into the source tree (../shared beside it included) or the build tree.
+file(GLOB_RECURSE installed_binaries "${prefix}/bin/*" "${prefix}/lib/*.so*" "${prefix}/lib/*.a")
+foreach(binary IN LISTS installed_binaries)
+  file(STRINGS "${binary}" texts LENGTH_MINIMUM 8)
+  string(JOIN "\n" text ${texts})
+  foreach(tree "${LRSVO_SOURCE_DIR}" "${LRSVO_BUILD_DIR}")
+    string(FIND "${text}" "${tree}" at)
+    if(NOT at EQUAL -1)
+      message(FATAL_ERROR "consumer test: ${binary} holds the path ${tree}")
+    endif()
+  endforeach()
+endforeach()
+
 run("configuring the consumer against ${prefix}"
   "${CMAKE_COMMAND}" -S "${CONSUMER_SOURCE_DIR}" -B "${consumer_build}" -G "${GENERATOR}"
   "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" "-DCMAKE_BUILD_TYPE=${CONFIG}" "-DCMAKE_PREFIX_PATH=${prefix}"
