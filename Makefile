@@ -5,6 +5,8 @@
 #   make test      build, then run every test with ctest
 #   make demo      build, then render a synthetic long-range flight and run the odometry on it three ways (lrsvo demo)
 #   make sanitize  build into build-asan/ with ASan + UBSan and run the tests there
+#   make fuzz      build the parsers' libFuzzer targets into build-fuzz/ (clang) and run each
+#                  for FUZZ_SECONDS (default 60): executions, corpus and failing inputs per target
 #   make format    clang-format every C++ file in place
 #   make clean     remove build/ and build-asan/
 
@@ -25,7 +27,7 @@ endef
 
 CTEST := ctest --output-on-failure -j$(TEST_JOBS)
 
-.PHONY: all deps build test demo sanitize format clean
+.PHONY: all deps build test demo sanitize fuzz format clean
 
 all: build
 
@@ -64,10 +66,24 @@ sanitize: deps
 	cmake --build $(ASAN_DIR) -j $(JOBS)
 	cd $(ASAN_DIR) && $(CTEST) -E '^(consumer_find_package|$(SANITIZE_SKIP))$$'
 
+# The parsers' fuzz targets (unit_tests/fuzz): clang with libFuzzer, ASan and UBSan, on the
+# libraries they read with; nothing else is built. A failing input stops the run with status 1.
+FUZZ_DIR := build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_OPTIONS := -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+  -DLRSVO_FUZZ=ON -DLRSVO_BUILD_TESTS=OFF -DLRSVO_BUILD_BENCHMARKS=OFF \
+  '-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG -fsanitize=fuzzer-no-link,address,undefined'
+fuzz: export UBSAN_OPTIONS := print_stacktrace=1:halt_on_error=1
+fuzz:
+	@bash scripts/install_deps.sh clang libfuzzer-14-dev libomp-14-dev
+	$(call configure,$(FUZZ_DIR),$(FUZZ_OPTIONS))
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target lrsvo_fuzzers
+	bash scripts/run_fuzzers.sh $(FUZZ_DIR) $(FUZZ_SECONDS)
+
 format:
 	@bash scripts/install_deps.sh clang-format
 	find . \( -path ./.git -o -path './build*' \) -prune -o \( -name '*.cpp' -o -name '*.h' \) -print0 \
 	  | xargs -0 -r clang-format -i
 
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR)
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(FUZZ_DIR)

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -42,6 +43,13 @@ class NumberLines {
     return false;
   }
   [[noreturn]] void fail(const std::string& what) const { throw ParseError(path_, line_, what); }
+  // An id read as a number: a whole number that fits an int, else a failure naming `what`.
+  int id(double value, const std::string& what) const {
+    if (!(value == std::floor(value) && value >= std::numeric_limits<int>::min() &&
+          value <= std::numeric_limits<int>::max()))
+      fail(what + " " + std::to_string(value) + " is not a whole number within int's range");
+    return static_cast<int>(value);
+  }
 
  private:
   std::string path_;
@@ -77,7 +85,7 @@ StereoVoProblem loadGtsamStereoVo(const std::string& directory, const std::strin
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
     pose.linear() = Eigen::Quaterniond(r).normalized().toRotationMatrix();
     pose.translation() = worldFromCamera.topRightCorner<3, 1>();
-    const int id = static_cast<int>(v[0]);
+    const int id = poses.id(v[0], "pose id");
     if (posesById.count(id)) poses.fail("duplicate pose id " + std::to_string(id));
     auto* vertex = problem.graph.addVertex(
         std::make_unique<VertexPose>(static_cast<int>(problem.poses.size()) + 1, pose.inverse()));
@@ -94,9 +102,10 @@ StereoVoProblem loadGtsamStereoVo(const std::string& directory, const std::strin
   NumberLines factors(directory + "/VO_stereo_factors_" + set + ".txt");
   while (factors.next(v)) {
     if (v.size() != 8) factors.fail("expected pose landmark uL uR v X Y Z");
-    auto pose = posesById.find(static_cast<int>(v[0]));
-    if (pose == posesById.end()) factors.fail("unknown pose id " + std::to_string(static_cast<int>(v[0])));
-    const int landmark = static_cast<int>(v[1]);
+    const int poseId = factors.id(v[0], "pose id");
+    auto pose = posesById.find(poseId);
+    if (pose == posesById.end()) factors.fail("unknown pose id " + std::to_string(poseId));
+    const int landmark = factors.id(v[1], "landmark id");
     auto [entry, inserted] = problem.landmarkVertexIds.emplace(landmark, nextId);
     if (inserted) {
       const Eigen::Vector3d inWorld = pose->second->cameraFromWorld().inverse() * Eigen::Vector3d(v[5], v[6], v[7]);
