@@ -515,11 +515,13 @@ void runBenchWindow(const BenchWindowOptions& o) {
   }
 
   const std::vector<Contender> kitti = kittiContenders(contenders);
-  const bool kittiFound = std::filesystem::is_directory(o.kittiDirectory);
-  if (o.kitti && !kitti.empty() && !kittiFound && !o.kittiDirectoryGiven)
+  // A directory the user named must load (or fail loudly); the default one is optional.
+  const bool kittiWanted = o.kitti && !kitti.empty();
+  const bool kittiHere = o.kittiDirectoryGiven || std::filesystem::is_directory(o.kittiDirectory);
+  if (kittiWanted && !kittiHere)
     std::cout << "problem " << kKittiProblem << ": left out, no " << o.kittiDirectory
               << " here (run from the repository's top, or give --kitti-dir)\n";
-  if (o.kitti && !kitti.empty() && (kittiFound || o.kittiDirectoryGiven)) {
+  if (kittiWanted && kittiHere) {
     StereoVoProblem vo = loadGtsamStereoVo(o.kittiDirectory);
     nlohmann::ordered_json fields;
     fields["poses"] = vo.poses.size();

@@ -1,5 +1,7 @@
 #include "frontend/descriptor_alignment.h"
 
+#include <algorithm>
+
 #include <opencv2/calib3d.hpp>
 #include <opencv2/features2d.hpp>
 

@@ -85,13 +85,15 @@ std::vector<FrameEstimate> Odometry::estimate(const FrameObservations& frame, co
   return initialize();
 }
 
-std::vector<FrameEstimate> Odometry::finish() {
+std::vector<FrameEstimate> Odometry::finish() { return settled(givePendingUp()); }
+
+std::vector<FrameEstimate> Odometry::givePendingUp() {
   std::vector<FrameEstimate> estimates;
   for (std::size_t i = 0; i < pending_.size(); ++i) estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
   pending_.clear();
   pendingIndices_.clear();
   samples_.clear();
-  return settled(std::move(estimates));
+  return estimates;
 }
 
 bool Odometry::canRelocalise(double time_s) const {
@@ -99,11 +101,7 @@ bool Odometry::canRelocalise(double time_s) const {
 }
 
 std::vector<FrameEstimate> Odometry::relocalised(FrameEstimate estimate) {
-  std::vector<FrameEstimate> estimates;
-  for (std::size_t i = 0; i < pending_.size(); ++i) estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
-  pending_.clear();
-  pendingIndices_.clear();
-  samples_.clear();
+  std::vector<FrameEstimate> estimates = givePendingUp();
   tracking_ = true;
   estimate.relocalised = true;
   char note[96];

@@ -74,6 +74,9 @@ class Odometry {
   // Where a new segment's first camera (at time t) goes: the motion so far carried on (identity at the start).
   Eigen::Isometry3d segmentPlacement(double time_s) const;
   std::vector<FrameEstimate> initialize();
+  // The frames buffered for an initialisation, without a pose, in frame order;
+  // the buffer is emptied.
+  std::vector<FrameEstimate> givePendingUp();
   // A lost frame's pose against the lost segment's map: whether to try it.
   bool canRelocalise(double time_s) const;
   // The segment taken up again at `estimate`: the frames buffered since the

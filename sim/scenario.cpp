@@ -26,6 +26,19 @@ constexpr int kPaperFrames = 9600;
   throw Error("scenario " + where + ": " + message);
 }
 
+// The file's text. YAML is text: a NUL byte means a corrupt or binary file,
+// on which OpenCV's YAML parser (4.6) can loop for ever, so it is rejected
+// before parsing.
+std::string readYamlText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail("file " + path, "cannot be opened");
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::size_t nul = text.find('\0');
+  if (nul != std::string::npos)
+    fail("file " + path, "is not a text file (a NUL byte at offset " + std::to_string(nul) + ")");
+  return text;
+}
+
 // Reads the keys of one YAML map, each optional; finish() rejects any key
 // that no accessor asked for.
 class MapReader {
@@ -347,28 +360,13 @@ SimScenario stressScenario() {
   return s;
 }
 
-namespace {
-
-// YAML is text: a NUL byte is a corrupt or binary file, on which OpenCV's
-// YAML parser (4.6) can loop for ever, so it is rejected before parsing.
-void requireText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail("file " + path, "cannot be opened");
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  const std::size_t nul = text.find('\0');
-  if (nul != std::string::npos)
-    fail("file " + path, "is not a text file (a NUL byte at offset " + std::to_string(nul) + ")");
-}
-
-}  // namespace
-
 SimScenario readScenarioYaml(const std::string& path) {
-  requireText(path);
+  const std::string text = readYamlText(path);
   cv::FileStorage fs;
   // OpenCV's YAML parser rejects some malformed files with cv::Exception and
   // others with a standard exception (std::length_error on a broken scalar).
   try {
-    fs.open(path, cv::FileStorage::READ | cv::FileStorage::FORMAT_YAML);
+    fs.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
   } catch (const cv::Exception& e) {
     fail("file " + path, std::string("is not valid YAML: ") + e.err);
   } catch (const std::exception& e) {

@@ -159,16 +159,12 @@ StudyReport runInitAltitude(const StudyOptions& options) {
   StudyTable& summaryTable = report.addTable(
       "init_altitude.csv", {"altitude_m", "method", "trials", "successes", "mean_error_m", "std_error_m",
                             "median_error_m", "max_error_m", "mean_error_percent", "max_error_percent", "within_5m"});
+  std::map<std::pair<std::string, double>, std::vector<const Trial*>> trialsByCase;  // (method, altitude)
+  for (const Trial& t : all) trialsByCase[{t.method, t.altitude_m}].push_back(&t);
   std::map<std::pair<std::string, double>, AltitudeSummary> summaries;
-  std::map<double, std::vector<const Trial*>> longRangeTrials;  // flexed rig, by altitude
-  for (const Trial& t : all)
-    if (t.method == "long-range") longRangeTrials[t.altitude_m].push_back(&t);
   for (const Variant& variant : kVariants)
     for (double altitude : altitudes) {
-      std::vector<const Trial*> subset;
-      for (const Trial& t : all)
-        if (t.method == variant.name && t.altitude_m == altitude) subset.push_back(&t);
-      const AltitudeSummary s = summarise(subset);
+      const AltitudeSummary s = summarise(trialsByCase.at({variant.name, altitude}));
       summaries[{variant.name, altitude}] = s;
       summaryTable.addRow(std::vector<std::string>{format("%g", altitude), variant.name, std::to_string(s.trials),
                                                    std::to_string(s.successes), format("%.6g", s.meanError_m),
@@ -222,7 +218,7 @@ StudyReport runInitAltitude(const StudyOptions& options) {
   // Whether the long-range start errs by what its flight's information
   // allows: its scale errors in its own standard deviations, and that std.
   for (double altitude : {kPaperMaxAltitude_m, kMaxAltitude_m}) {
-    const std::vector<const Trial*>& trialsThere = longRangeTrials.at(altitude);
+    const std::vector<const Trial*>& trialsThere = trialsByCase.at({"long-range", altitude});
     std::vector<double> stds;
     for (const Trial* t : trialsThere)
       if (std::isfinite(t->scaleStd)) stds.push_back(t->scaleStd);
