@@ -4,7 +4,7 @@
 #   make build     install deps, configure (Ninja, Release) and build; binaries in build/bin/
 #   make test      build, then run every test with ctest
 #   make demo      build, then render a synthetic long-range flight and run the odometry on it three ways (lrsvo demo)
-#   make sanitize  build into build-asan/ with ASan + UBSan and run the tests there
+#   make sanitize  build into build-asan/ with ASan + UBSan, static libraries, and run the tests there
 #   make fuzz      build the parsers' libFuzzer targets into build-fuzz/ (clang) and run each
 #                  for FUZZ_SECONDS (default 60): executions, corpus and failing inputs per target
 #   make format    clang-format every C++ file in place
@@ -48,8 +48,9 @@ demo: build
 # test discovery that runs during the build. With ASan + UBSan on Eigen code, g++'s -O2 -g
 # compiles 5-8 times slower than a Release build (variable tracking for -g is most of it), so
 # RelWithDebInfo here means -O1 with line tables: stack traces keep file and line, and the
-# build fits the CI budget. The packaging test is left to `make test`.
-SANITIZE_OPTIONS := -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLRSVO_SANITIZE=ON -DLRSVO_BUILD_BENCHMARKS=OFF \
+# build fits the CI budget. The packaging test is left to `make test`. The libraries are static
+# here (shared in `make test`), so the tests also show every plugin registered in a static link.
+SANITIZE_OPTIONS := -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLRSVO_SANITIZE=ON -DLRSVO_BUILD_BENCHMARKS=OFF -DBUILD_SHARED_LIBS=OFF \
   '-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG'
 # Left to `make test`: tests that take minutes each under ASan at -O1 (solves repeated for every
 # constraint plugin or start scale; whole rendered flights, the signalled runs of lrsvo_run_interrupted_cli

@@ -9,11 +9,11 @@
 #include <vector>
 
 #include "apps/command.h"
-#include "edges/bal_problem.h"
-#include "graph/error.h"
-#include "graph/optimizer.h"
-#include "graph/registry.h"
-#include "graph/robust_kernel.h"
+#include "lrsvo/frontend/datasets/bal_problem.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/optimizer.h"
+#include "lrsvo/graph/registry.h"
+#include "lrsvo/graph/robust_kernel.h"
 
 namespace lrsvo::cli {
 namespace {

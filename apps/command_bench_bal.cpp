@@ -17,9 +17,9 @@
 #include "apps/bench/bench_common.h"
 #include "apps/bench/ceres_bal.h"
 #include "apps/command.h"
-#include "edges/bal_problem.h"
-#include "graph/error.h"
-#include "graph/optimizer.h"
+#include "lrsvo/frontend/datasets/bal_problem.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/optimizer.h"
 
 namespace lrsvo::cli {
 namespace {

@@ -10,8 +10,8 @@
 
 #include "apps/bench/bench_common.h"
 #include "apps/command.h"
-#include "eval/odometry_run.h"
-#include "sim/sim_frame_source.h"
+#include "lrsvo/frontend/odometry/odometry_run.h"
+#include "lrsvo/sim/sim_frame_source.h"
 
 namespace lrsvo::cli {
 namespace {

@@ -18,9 +18,9 @@
 #include "apps/bench/bench_common.h"
 #include "apps/command.h"
 #include "apps/run_setup.h"
-#include "eval/odometry_run.h"
-#include "graph/error.h"
-#include "sim/sim_frame_source.h"
+#include "lrsvo/frontend/odometry/odometry_run.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/sim_frame_source.h"
 
 namespace lrsvo::cli {
 namespace {

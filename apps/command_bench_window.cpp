@@ -21,11 +21,11 @@
 #include "apps/bench/bench_common.h"
 #include "apps/bench/ceres_stereo.h"
 #include "apps/command.h"
-#include "constraints/constraint_method.h"
-#include "edges/gtsam_stereo_vo.h"
-#include "graph/error.h"
-#include "graph/registry.h"
-#include "sim/window_problem.h"
+#include "lrsvo/constraints/constraint_method.h"
+#include "lrsvo/frontend/datasets/gtsam_stereo_vo.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/registry.h"
+#include "lrsvo/sim/window_problem.h"
 
 namespace lrsvo::cli {
 namespace {

@@ -12,7 +12,7 @@
 #include "apps/command.h"
 #include "apps/run_setup.h"
 #include "apps/stop_on_signal.h"
-#include "eval/run_report.h"
+#include "lrsvo/eval/run_report.h"
 
 namespace lrsvo::cli {
 namespace {

@@ -12,10 +12,10 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.h"
-#include "eval/trajectory_metrics.h"
-#include "eval/trajectory_plots.h"
-#include "frontend/pose_file.h"
-#include "graph/error.h"
+#include "lrsvo/eval/trajectory_metrics.h"
+#include "lrsvo/eval/trajectory_plots.h"
+#include "lrsvo/frontend/datasets/pose_file.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo::cli {
 namespace {

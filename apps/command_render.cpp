@@ -7,9 +7,9 @@
 #include <string>
 
 #include "apps/command.h"
-#include "eval/odometry_run.h"
-#include "sim/euroc_writer.h"
-#include "sim/sim_frame_source.h"
+#include "lrsvo/frontend/odometry/odometry_run.h"
+#include "lrsvo/sim/euroc_writer.h"
+#include "lrsvo/sim/sim_frame_source.h"
 
 namespace lrsvo::cli {
 namespace {

@@ -5,13 +5,15 @@
 #include <string>
 
 #include "apps/command.h"
-#include "constraints/constraint_method.h"
-#include "graph/edge.h"
-#include "graph/linear_solver.h"
-#include "graph/optimization_algorithm.h"
-#include "graph/registry.h"
-#include "graph/robust_kernel.h"
-#include "graph/vertex.h"
+#include "lrsvo/constraints/constraint_method.h"
+#include "lrsvo/constraints/constraint_types.h"
+#include "lrsvo/edges/edge_types.h"
+#include "lrsvo/graph/edge.h"
+#include "lrsvo/graph/linear_solver.h"
+#include "lrsvo/graph/optimization_algorithm.h"
+#include "lrsvo/graph/registry.h"
+#include "lrsvo/graph/robust_kernel.h"
+#include "lrsvo/graph/vertex.h"
 
 namespace lrsvo::cli {
 namespace {
@@ -43,6 +45,8 @@ void printSolverNames() {
 }
 
 void listAll() {
+  registerEdgeTypes();
+  registerConstraintTypes();
   printRegistry<OptimizationAlgorithm>("Optimisation algorithms:");
   printRegistry<LinearSolver>("Linear solvers:");
   printSolverNames();

@@ -12,9 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.h"
-#include "eval/study.h"
-#include "eval/study_index.h"
-#include "graph/error.h"
+#include "lrsvo/eval/study.h"
+#include "lrsvo/eval/study_index.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo::cli {
 namespace {

@@ -9,10 +9,10 @@
 #include <exception>
 #include <string>
 
-#include "eval/odometry_run.h"
-#include "eval/run_report.h"
-#include "sim/scenario.h"
-#include "sim/sim_frame_source.h"
+#include "lrsvo/eval/run_report.h"
+#include "lrsvo/frontend/odometry/odometry_run.h"
+#include "lrsvo/sim/scenario.h"
+#include "lrsvo/sim/sim_frame_source.h"
 
 namespace {
 

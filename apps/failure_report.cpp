@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo::cli {
 namespace {

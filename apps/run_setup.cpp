@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
-#include "frontend/source_factory.h"
-#include "graph/error.h"
-#include "sim/scenario.h"
-#include "sim/sim_frame_source.h"
+#include "lrsvo/frontend/datasets/source_factory.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/scenario.h"
+#include "lrsvo/sim/sim_frame_source.h"
 
 namespace lrsvo::cli {
 

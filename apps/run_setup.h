@@ -7,10 +7,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "eval/odometry_run.h"
-#include "frontend/frame_source.h"
-#include "frontend/observations.h"
-#include "frontend/outlier_threshold.h"
+#include "lrsvo/frontend/datasets/frame_source.h"
+#include "lrsvo/frontend/odometry/observations.h"
+#include "lrsvo/frontend/odometry/odometry_run.h"
+#include "lrsvo/frontend/odometry/outlier_threshold.h"
 
 namespace lrsvo::cli {
 

@@ -4,7 +4,7 @@
 #include <csignal>
 #include <cstring>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo::cli {
 namespace {

@@ -1,13 +1,13 @@
-#include "constraints/barrier_edge.h"
+#include "lrsvo/constraints/barrier_edge.h"
 
 #include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
 
-#include "graph/edge_io.h"
-#include "graph/error.h"
-#include "graph/registry.h"
+#include "lrsvo/graph/edge_io.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
 
@@ -57,7 +57,5 @@ void BarrierEdge::readData(std::istream& in) {
   if (!(lower_ < upper_) || !(mu_ > 0.0)) throw Error(std::string(kTypeTag) + ": need lower < upper and mu > 0");
   if (!vertices_[0]->isEuclidean()) throw Error(std::string(kTypeTag) + ": the vertex must be Euclidean");
 }
-
-LRSVO_REGISTER_TYPE(Edge, BarrierEdge);
 
 }  // namespace lrsvo

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "graph/edge.h"
+#include "lrsvo/graph/edge.h"
 
 namespace lrsvo {
 

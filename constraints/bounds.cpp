@@ -1,9 +1,9 @@
-#include "constraints/bounds.h"
+#include "lrsvo/constraints/bounds.h"
 
 #include <cmath>
 #include <string>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

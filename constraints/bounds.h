@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "graph/vertex.h"
+#include "lrsvo/graph/vertex.h"
 
 namespace lrsvo {
 

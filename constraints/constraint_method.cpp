@@ -1,11 +1,11 @@
-#include "constraints/constraint_method.h"
+#include "lrsvo/constraints/constraint_method.h"
 
 #include <algorithm>
 #include <string>
 
-#include "graph/error.h"
-#include "graph/optimizer.h"
-#include "graph/registry.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/optimizer.h"
+#include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
 

@@ -3,11 +3,12 @@
 #include <memory>
 #include <string>
 
-#include "constraints/bounds.h"
-#include "graph/constraint_handler.h"
-#include "graph/graph.h"
-#include "graph/solver_options.h"
-#include "graph/solver_summary.h"
+#include "lrsvo/constraints/bounds.h"
+#include "lrsvo/graph/constraint_handler.h"
+#include "lrsvo/graph/graph.h"
+#include "lrsvo/graph/registry.h"
+#include "lrsvo/graph/solver_options.h"
+#include "lrsvo/graph/solver_summary.h"
 
 namespace lrsvo {
 
@@ -39,6 +40,9 @@ struct ConstraintSettings {
 // the method touches no graph, vertex or edge code.
 class ConstraintMethod : public ConstraintHandler {
  public:
+  // The constraint library's methods (Registry<ConstraintMethod> adds them on first use).
+  static void addBuiltins(Registry<ConstraintMethod>& registry);
+
   void setBounds(Bounds bounds) { bounds_ = std::move(bounds); }
   const Bounds& bounds() const { return bounds_; }
   void setSettings(const ConstraintSettings& settings) { settings_ = settings; }

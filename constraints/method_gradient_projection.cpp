@@ -1,8 +1,9 @@
 #include <algorithm>
 #include <vector>
 
-#include "constraints/constraint_method.h"
-#include "graph/registry.h"
+#include "lrsvo/constraints/builtin_methods.h"
+#include "lrsvo/constraints/constraint_method.h"
+#include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
 namespace {
@@ -51,8 +52,11 @@ class GradientProjection : public ConstraintMethod {
   }
 };
 
-LRSVO_REGISTER(ConstraintMethod, GradientProjection, "gradient_projection",
-               "projected active-set Levenberg-Marquardt: hold parameters at active bounds, project steps");
-
 }  // namespace
+
+void addGradientProjection(Registry<ConstraintMethod>& registry) {
+  registry.addType<GradientProjection>(
+      "gradient_projection",
+      "projected active-set Levenberg-Marquardt: hold parameters at active bounds, project steps");
+}
 }  // namespace lrsvo

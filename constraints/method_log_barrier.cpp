@@ -1,9 +1,10 @@
 #include <memory>
 #include <vector>
 
-#include "constraints/barrier_edge.h"
-#include "constraints/constraint_method.h"
-#include "graph/registry.h"
+#include "lrsvo/constraints/barrier_edge.h"
+#include "lrsvo/constraints/builtin_methods.h"
+#include "lrsvo/constraints/constraint_method.h"
+#include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
 namespace {
@@ -52,8 +53,11 @@ class LogBarrier : public ConstraintMethod {
   std::vector<const Edge*> edges_;
 };
 
-LRSVO_REGISTER(ConstraintMethod, LogBarrier, "log_barrier",
-               "the paper's log barrier: unary barrier edges with exact gradient and Hessian, mu decreased per round");
-
 }  // namespace
+
+void addLogBarrier(Registry<ConstraintMethod>& registry) {
+  registry.addType<LogBarrier>(
+      "log_barrier",
+      "the paper's log barrier: unary barrier edges with exact gradient and Hessian, mu decreased per round");
+}
 }  // namespace lrsvo

@@ -6,10 +6,11 @@
 
 #include <nlopt.hpp>
 
-#include "constraints/constraint_method.h"
-#include "graph/block_system.h"
-#include "graph/error.h"
-#include "graph/registry.h"
+#include "lrsvo/constraints/builtin_methods.h"
+#include "lrsvo/constraints/constraint_method.h"
+#include "lrsvo/graph/block_system.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
 namespace {
@@ -129,16 +130,17 @@ class NloptMethod : public ConstraintMethod {
   std::string name_;
 };
 
-struct NloptRegistrar {
-  NloptRegistrar(const char* name, nlopt::algorithm algorithm, const char* description) {
-    Registry<ConstraintMethod>::instance().add(
-        name, [=] { return std::make_unique<NloptMethod>(algorithm, name); }, description);
-  }
-};
-
-const NloptRegistrar kLbfgs("nlopt_lbfgs", nlopt::LD_LBFGS,
-                            "NLopt L-BFGS with bounds on the graph's analytic gradient (small graphs, test oracle)");
-const NloptRegistrar kMma("nlopt_mma", nlopt::LD_MMA, "NLopt MMA (method of moving asymptotes) with bounds");
+void addNlopt(Registry<ConstraintMethod>& registry, const char* name, nlopt::algorithm algorithm,
+              const char* description) {
+  registry.add(
+      name, [=] { return std::make_unique<NloptMethod>(algorithm, name); }, description);
+}
 
 }  // namespace
+
+void addNloptMethods(Registry<ConstraintMethod>& registry) {
+  addNlopt(registry, "nlopt_lbfgs", nlopt::LD_LBFGS,
+           "NLopt L-BFGS with bounds on the graph's analytic gradient (small graphs, test oracle)");
+  addNlopt(registry, "nlopt_mma", nlopt::LD_MMA, "NLopt MMA (method of moving asymptotes) with bounds");
+}
 }  // namespace lrsvo

@@ -1,5 +1,6 @@
-#include "constraints/constraint_method.h"
-#include "graph/registry.h"
+#include "lrsvo/constraints/builtin_methods.h"
+#include "lrsvo/constraints/constraint_method.h"
+#include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
 namespace {
@@ -10,7 +11,9 @@ class NoConstraints : public ConstraintMethod {
   void begin(Graph&) override {}
 };
 
-LRSVO_REGISTER(ConstraintMethod, NoConstraints, "none", "bounds ignored: the unconstrained problem");
-
 }  // namespace
+
+void addNoConstraints(Registry<ConstraintMethod>& registry) {
+  registry.addType<NoConstraints>("none", "bounds ignored: the unconstrained problem");
+}
 }  // namespace lrsvo

@@ -1,11 +1,10 @@
-#include "edges/edge_bal_projection.h"
+#include "lrsvo/edges/edge_bal_projection.h"
 
 #include <cmath>
 
 #include <Eigen/Geometry>
 
-#include "graph/registry.h"
-#include "vertices/so3.h"
+#include "lrsvo/vertices/so3.h"
 
 namespace lrsvo {
 
@@ -52,7 +51,5 @@ void EdgeBalProjection::computeJacobians() {
   jc.col(8) = f * r2 * r2 * p;
   jacobian<1>() = du_dP * R;
 }
-
-LRSVO_REGISTER_TYPE(Edge, EdgeBalProjection);
 
 }  // namespace lrsvo

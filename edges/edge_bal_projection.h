@@ -1,8 +1,8 @@
 #pragma once
 
-#include "graph/base_edge.h"
-#include "vertices/vertex_bal_camera.h"
-#include "vertices/vertex_point3.h"
+#include "lrsvo/graph/base_edge.h"
+#include "lrsvo/vertices/vertex_bal_camera.h"
+#include "lrsvo/vertices/vertex_point3.h"
 
 namespace lrsvo {
 

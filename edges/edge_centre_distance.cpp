@@ -1,6 +1,4 @@
-#include "edges/edge_centre_distance.h"
-
-#include "graph/registry.h"
+#include "lrsvo/edges/edge_centre_distance.h"
 
 namespace lrsvo {
 
@@ -18,7 +16,5 @@ void EdgeCentreDistance::computeJacobians() {
   jacobian<1>().leftCols<3>() = -direction * vertexAs<1>()->rotation().transpose();
   jacobian<1>().rightCols<3>().setZero();
 }
-
-LRSVO_REGISTER_TYPE(Edge, EdgeCentreDistance);
 
 }  // namespace lrsvo

@@ -1,6 +1,4 @@
-#include "edges/edge_extrinsic_rate_prior.h"
-
-#include "graph/registry.h"
+#include "lrsvo/edges/edge_extrinsic_rate_prior.h"
 
 namespace lrsvo {
 
@@ -9,7 +7,5 @@ void EdgeExtrinsicRatePrior::computeResidual(Residual& residual) const {
 }
 
 void EdgeExtrinsicRatePrior::computeJacobians() { jacobian<0>().setIdentity(); }
-
-LRSVO_REGISTER_TYPE(Edge, EdgeExtrinsicRatePrior);
 
 }  // namespace lrsvo

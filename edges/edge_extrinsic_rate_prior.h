@@ -1,7 +1,7 @@
 #pragma once
 
-#include "graph/base_edge.h"
-#include "vertices/vertex_extrinsic_rate.h"
+#include "lrsvo/graph/base_edge.h"
+#include "lrsvo/vertices/vertex_extrinsic_rate.h"
 
 namespace lrsvo {
 

@@ -1,7 +1,6 @@
-#include "edges/edge_project_base.h"
+#include "lrsvo/edges/edge_project_base.h"
 
-#include "graph/registry.h"
-#include "vertices/so3.h"
+#include "lrsvo/vertices/so3.h"
 
 namespace lrsvo {
 
@@ -19,7 +18,5 @@ void EdgeProjectBase::computeJacobians() {
   jacobian<0>().rightCols<3>() = -dxdp * skew(pointInCamera);
   jacobian<1>() = dxdp * pose.rotation();
 }
-
-LRSVO_REGISTER_TYPE(Edge, EdgeProjectBase);
 
 }  // namespace lrsvo

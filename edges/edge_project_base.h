@@ -1,9 +1,9 @@
 #pragma once
 
-#include "edges/pinhole.h"
-#include "graph/base_edge.h"
-#include "vertices/vertex_point3.h"
-#include "vertices/vertex_pose.h"
+#include "lrsvo/edges/pinhole.h"
+#include "lrsvo/graph/base_edge.h"
+#include "lrsvo/vertices/vertex_point3.h"
+#include "lrsvo/vertices/vertex_pose.h"
 
 namespace lrsvo {
 

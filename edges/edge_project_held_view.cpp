@@ -1,11 +1,10 @@
-#include "edges/edge_project_held_view.h"
+#include "lrsvo/edges/edge_project_held_view.h"
 
 #include <cmath>
 #include <string>
 
-#include "graph/edge_io.h"
-#include "graph/error.h"
-#include "graph/registry.h"
+#include "lrsvo/graph/edge_io.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 
@@ -53,7 +52,5 @@ void EdgeProjectHeldView::readParameters(std::istream& in) {
   for (double& value : origin_) value = readNumber(in, kTypeTag);
   for (double& value : offset_) value = readNumber(in, kTypeTag);
 }
-
-LRSVO_REGISTER_TYPE(Edge, EdgeProjectHeldView);
 
 }  // namespace lrsvo

@@ -2,10 +2,10 @@
 
 #include <Eigen/Geometry>
 
-#include "edges/pinhole.h"
-#include "graph/base_edge.h"
-#include "vertices/vertex_point3.h"
-#include "vertices/vertex_scale.h"
+#include "lrsvo/edges/pinhole.h"
+#include "lrsvo/graph/base_edge.h"
+#include "lrsvo/vertices/vertex_point3.h"
+#include "lrsvo/vertices/vertex_scale.h"
 
 namespace lrsvo {
 

@@ -1,6 +1,4 @@
-#include "edges/edge_project_secondary.h"
-
-#include "graph/registry.h"
+#include "lrsvo/edges/edge_project_secondary.h"
 
 namespace lrsvo {
 
@@ -33,8 +31,5 @@ void EdgeProjectSecondaryScaled::computeJacobians() {
   jacobian<2>() = j.extrinsic;
   jacobian<3>() = j.kappa;
 }
-
-LRSVO_REGISTER_TYPE(Edge, EdgeProjectSecondary);
-LRSVO_REGISTER_TYPE(Edge, EdgeProjectSecondaryScaled);
 
 }  // namespace lrsvo

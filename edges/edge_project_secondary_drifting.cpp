@@ -1,9 +1,8 @@
-#include "edges/edge_project_secondary_drifting.h"
+#include "lrsvo/edges/edge_project_secondary_drifting.h"
 
 #include <cmath>
 
-#include "graph/edge_io.h"
-#include "graph/registry.h"
+#include "lrsvo/graph/edge_io.h"
 
 namespace lrsvo {
 
@@ -52,7 +51,5 @@ void EdgeProjectSecondaryDrifting::readParameters(std::istream& in) {
   camera_.read(in, kTypeTag);
   dt_s_ = readNumber(in, kTypeTag);
 }
-
-LRSVO_REGISTER_TYPE(Edge, EdgeProjectSecondaryDrifting);
 
 }  // namespace lrsvo

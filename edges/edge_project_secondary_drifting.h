@@ -1,9 +1,9 @@
 #pragma once
 
-#include "edges/secondary_projection.h"
-#include "graph/base_edge.h"
-#include "vertices/vertex_extrinsic_rate.h"
-#include "vertices/vertex_point3.h"
+#include "lrsvo/edges/secondary_projection.h"
+#include "lrsvo/graph/base_edge.h"
+#include "lrsvo/vertices/vertex_extrinsic_rate.h"
+#include "lrsvo/vertices/vertex_point3.h"
 
 namespace lrsvo {
 

@@ -1,6 +1,4 @@
-#include "edges/edge_scale_prior.h"
-
-#include "graph/registry.h"
+#include "lrsvo/edges/edge_scale_prior.h"
 
 namespace lrsvo {
 
@@ -9,7 +7,5 @@ void EdgeScalePrior::computeResidual(Residual& residual) const {
 }
 
 void EdgeScalePrior::computeJacobians() { jacobian<0>()(0, 0) = 1.0; }
-
-LRSVO_REGISTER_TYPE(Edge, EdgeScalePrior);
 
 }  // namespace lrsvo

@@ -1,8 +1,8 @@
-#include "edges/pinhole.h"
+#include "lrsvo/edges/pinhole.h"
 
 #include <string>
 
-#include "graph/edge_io.h"
+#include "lrsvo/graph/edge_io.h"
 
 namespace lrsvo {
 

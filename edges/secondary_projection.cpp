@@ -1,12 +1,12 @@
-#include "edges/secondary_projection.h"
+#include "lrsvo/edges/secondary_projection.h"
 
 #include <istream>
 #include <limits>
 #include <ostream>
 #include <string>
 
-#include "graph/error.h"
-#include "vertices/so3.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/vertices/so3.h"
 
 namespace lrsvo {
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "edges/pinhole.h"
-#include "vertices/vertex_pose.h"
-#include "vertices/vertex_stereo_extrinsic.h"
+#include "lrsvo/edges/pinhole.h"
+#include "lrsvo/vertices/vertex_pose.h"
+#include "lrsvo/vertices/vertex_stereo_extrinsic.h"
 
 namespace lrsvo {
 

@@ -1,10 +1,10 @@
-#include "eval/deformed_pair.h"
+#include "lrsvo/eval/deformed_pair.h"
 
 #include <limits>
 
-#include "frontend/epipolar.h"
-#include "frontend/triangulation.h"
-#include "graph/error.h"
+#include "lrsvo/frontend/features/epipolar.h"
+#include "lrsvo/frontend/odometry/triangulation.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

@@ -5,8 +5,8 @@
 
 #include <Eigen/Core>
 
-#include "edges/pinhole.h"
-#include "vertices/vertex_stereo_extrinsic.h"
+#include "lrsvo/edges/pinhole.h"
+#include "lrsvo/vertices/vertex_stereo_extrinsic.h"
 
 namespace lrsvo {
 

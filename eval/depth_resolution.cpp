@@ -1,8 +1,8 @@
-#include "eval/depth_resolution.h"
+#include "lrsvo/eval/depth_resolution.h"
 
 #include <limits>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {

@@ -1,12 +1,12 @@
-#include "eval/initialization_trial.h"
+#include "lrsvo/eval/initialization_trial.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 
-#include "eval/paper_cameras.h"
-#include "graph/error.h"
+#include "lrsvo/eval/paper_cameras.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {

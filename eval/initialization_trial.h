@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <string>
 
-#include "frontend/initialization_result.h"
-#include "sim/feature_simulator.h"
+#include "lrsvo/frontend/odometry/initialization_result.h"
+#include "lrsvo/sim/feature_simulator.h"
 
 namespace lrsvo {
 

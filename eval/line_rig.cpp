@@ -1,8 +1,8 @@
-#include "eval/line_rig.h"
+#include "lrsvo/eval/line_rig.h"
 
 #include <string>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

@@ -6,8 +6,8 @@
 
 #include <Eigen/Core>
 
-#include "edges/pinhole.h"
-#include "frontend/triangulation.h"
+#include "lrsvo/edges/pinhole.h"
+#include "lrsvo/frontend/odometry/triangulation.h"
 
 namespace lrsvo {
 

@@ -1,6 +1,6 @@
-#include "eval/paper_cameras.h"
+#include "lrsvo/eval/paper_cameras.h"
 
-#include "frontend/rig.h"
+#include "lrsvo/frontend/odometry/rig.h"
 
 namespace lrsvo {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "edges/pinhole.h"
+#include "lrsvo/edges/pinhole.h"
 
 namespace lrsvo {
 

@@ -1,4 +1,4 @@
-#include "eval/plotting.h"
+#include "lrsvo/eval/plotting.h"
 
 #include <cstdlib>
 

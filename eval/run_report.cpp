@@ -1,13 +1,13 @@
-#include "eval/run_report.h"
+#include "lrsvo/eval/run_report.h"
 
 #include <cstdlib>
 #include <fstream>
 
-#include "eval/plotting.h"
-#include "eval/trajectory_association.h"
-#include "eval/trajectory_metrics.h"
-#include "eval/trajectory_plots.h"
-#include "frontend/pose_file.h"
+#include "lrsvo/eval/plotting.h"
+#include "lrsvo/eval/trajectory_association.h"
+#include "lrsvo/eval/trajectory_metrics.h"
+#include "lrsvo/eval/trajectory_plots.h"
+#include "lrsvo/frontend/datasets/pose_file.h"
 
 namespace lrsvo {
 namespace {

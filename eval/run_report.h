@@ -6,8 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "eval/odometry_run.h"
-#include "frontend/frame_source.h"
+#include "lrsvo/frontend/datasets/frame_source.h"
+#include "lrsvo/frontend/odometry/odometry_run.h"
 
 namespace lrsvo {
 

@@ -1,11 +1,11 @@
-#include "eval/sample_statistics.h"
+#include "lrsvo/eval/sample_statistics.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

@@ -1,4 +1,6 @@
-#include "eval/study.h"
+#include "lrsvo/eval/study.h"
+
+#include "lrsvo/eval/studies/paper_studies.h"
 
 #include <cmath>
 #include <cstdio>
@@ -10,8 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "eval/plotting.h"
-#include "graph/error.h"
+#include "lrsvo/eval/plotting.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {
@@ -140,8 +142,10 @@ void StudyReport::print(std::ostream& out) const {
   out << line;
 }
 
-std::vector<Study>& studies() {
-  static std::vector<Study> all;
+const std::vector<Study>& studies() {
+  static const std::vector<Study> all = {depthDistributionStudy(), disparityStudy(), epipolarStudy(),
+                                         initAltitudeStudy(),      initScaleStudy(), rangeBiasStudy(),
+                                         triangulationStudy()};
   return all;
 }
 

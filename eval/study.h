@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "eval/plotting.h"
+#include "lrsvo/eval/plotting.h"
 
 namespace lrsvo {
 
@@ -80,7 +80,7 @@ class StudyReport {
   double seconds_ = 0.0;
 };
 
-// A study of the paper: registered by name from its own file in eval/studies/.
+// A study of the paper, defined in its own file of eval/studies/.
 struct Study {
   std::string name;    // e.g. "range-bias"
   std::string figure;  // e.g. "Fig. 6"
@@ -89,16 +89,7 @@ struct Study {
   std::function<StudyReport(const StudyOptions&)> run;
 };
 
-std::vector<Study>& studies();
+const std::vector<Study>& studies();              // in a fixed order
 const Study& findStudy(const std::string& name);  // throws lrsvo::Error listing the known names
 
-struct StudyRegistrar {
-  explicit StudyRegistrar(Study study) { studies().push_back(std::move(study)); }
-};
-
 }  // namespace lrsvo
-
-#define LRSVO_REGISTER_STUDY_CONCAT_(a, b) a##b
-#define LRSVO_REGISTER_STUDY_NAME_(line) LRSVO_REGISTER_STUDY_CONCAT_(lrsvo_study_registrar_, line)
-// One line in a study's own file registers it: LRSVO_REGISTER_STUDY(Study{...});
-#define LRSVO_REGISTER_STUDY(...) static const ::lrsvo::StudyRegistrar LRSVO_REGISTER_STUDY_NAME_(__LINE__)(__VA_ARGS__)

@@ -1,8 +1,8 @@
-#include "eval/trajectory_alignment.h"
+#include "lrsvo/eval/trajectory_alignment.h"
 
 #include <Eigen/Geometry>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {

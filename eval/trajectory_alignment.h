@@ -1,6 +1,6 @@
 #pragma once
 
-#include "frontend/pose_file.h"
+#include "lrsvo/frontend/datasets/pose_file.h"
 
 namespace lrsvo {
 

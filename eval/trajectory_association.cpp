@@ -1,11 +1,11 @@
-#include "eval/trajectory_association.h"
+#include "lrsvo/eval/trajectory_association.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <tuple>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

@@ -1,11 +1,11 @@
-#include "eval/trajectory_metrics.h"
+#include "lrsvo/eval/trajectory_metrics.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <numeric>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {

@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "eval/trajectory_alignment.h"
-#include "eval/trajectory_association.h"
+#include "lrsvo/eval/trajectory_alignment.h"
+#include "lrsvo/eval/trajectory_association.h"
 
 namespace lrsvo {
 

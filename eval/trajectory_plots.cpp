@@ -1,4 +1,4 @@
-#include "eval/trajectory_plots.h"
+#include "lrsvo/eval/trajectory_plots.h"
 
 #include <cstdlib>
 #include <fstream>
@@ -6,8 +6,8 @@
 #include <limits>
 #include <numbers>
 
-#include "eval/plotting.h"
-#include "graph/error.h"
+#include "lrsvo/eval/plotting.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "eval/trajectory_metrics.h"
+#include "lrsvo/eval/trajectory_metrics.h"
 
 namespace lrsvo {
 

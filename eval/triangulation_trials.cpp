@@ -1,8 +1,8 @@
-#include "eval/triangulation_trials.h"
+#include "lrsvo/eval/triangulation_trials.h"
 
 #include <random>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-#include "eval/line_rig.h"
+#include "lrsvo/eval/line_rig.h"
 
 namespace lrsvo {
 

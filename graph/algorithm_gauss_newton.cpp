@@ -1,7 +1,8 @@
 #include <cmath>
 
-#include "graph/optimization_algorithm.h"
-#include "graph/registry.h"
+#include "lrsvo/graph/builtin_plugins.h"
+#include "lrsvo/graph/optimization_algorithm.h"
+#include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
 namespace {
@@ -76,8 +77,9 @@ class GaussNewton : public OptimizationAlgorithm {
   }
 };
 
-const Registrar<OptimizationAlgorithm> kRegistrar(
-    "gn", [] { return std::make_unique<GaussNewton>(); }, "Gauss-Newton with step halving");
-
 }  // namespace
+
+void addGaussNewton(Registry<OptimizationAlgorithm>& registry) {
+  registry.addType<GaussNewton>("gn", "Gauss-Newton with step halving");
+}
 }  // namespace lrsvo

@@ -1,8 +1,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "graph/optimization_algorithm.h"
-#include "graph/registry.h"
+#include "lrsvo/graph/builtin_plugins.h"
+#include "lrsvo/graph/optimization_algorithm.h"
+#include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
 namespace {
@@ -99,9 +100,9 @@ class LevenbergMarquardt : public OptimizationAlgorithm {
   }
 };
 
-const Registrar<OptimizationAlgorithm> kRegistrar(
-    "lm", [] { return std::make_unique<LevenbergMarquardt>(); },
-    "Levenberg-Marquardt, multiplicative or additive damping");
-
 }  // namespace
+
+void addLevenbergMarquardt(Registry<OptimizationAlgorithm>& registry) {
+  registry.addType<LevenbergMarquardt>("lm", "Levenberg-Marquardt, multiplicative or additive damping");
+}
 }  // namespace lrsvo

@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "graph/edge.h"
+#include "lrsvo/graph/edge.h"
 
 namespace lrsvo {
 

@@ -11,10 +11,10 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
-#include "graph/edge.h"
-#include "graph/edge_io.h"
-#include "graph/error.h"
-#include "graph/robust_kernel.h"
+#include "lrsvo/graph/edge.h"
+#include "lrsvo/graph/edge_io.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/robust_kernel.h"
 
 namespace lrsvo {
 

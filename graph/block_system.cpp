@@ -1,4 +1,4 @@
-#include "graph/block_system.h"
+#include "lrsvo/graph/block_system.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <string>
 #include <unordered_map>
 
-#include "graph/error.h"
-#include "graph/parallel_for.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/parallel_for.h"
 
 namespace lrsvo {
 

@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "graph/graph.h"
+#include "lrsvo/graph/graph.h"
 
 namespace lrsvo {
 

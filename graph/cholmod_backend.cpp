@@ -1,8 +1,8 @@
-#include "graph/cholmod_backend.h"
+#include "lrsvo/graph/cholmod_backend.h"
 
 #include <algorithm>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

@@ -2,7 +2,7 @@
 
 #include <cholmod.h>
 
-#include "graph/symmetric_backend.h"
+#include "lrsvo/graph/symmetric_backend.h"
 
 namespace lrsvo {
 

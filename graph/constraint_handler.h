@@ -2,8 +2,8 @@
 
 #include <Eigen/Core>
 
-#include "graph/block_system.h"
-#include "graph/graph.h"
+#include "lrsvo/graph/block_system.h"
+#include "lrsvo/graph/graph.h"
 
 namespace lrsvo {
 

@@ -1,4 +1,4 @@
-#include "graph/dense_backend.h"
+#include "lrsvo/graph/dense_backend.h"
 
 #include <Eigen/Cholesky>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "graph/symmetric_backend.h"
+#include "lrsvo/graph/symmetric_backend.h"
 
 namespace lrsvo {
 

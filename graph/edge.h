@@ -3,7 +3,7 @@
 #include <iosfwd>
 #include <vector>
 
-#include "graph/vertex.h"
+#include "lrsvo/graph/vertex.h"
 
 namespace lrsvo {
 

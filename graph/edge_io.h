@@ -10,8 +10,8 @@
 
 #include <Eigen/Core>
 
-#include "graph/error.h"
-#include "graph/robust_kernel.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/robust_kernel.h"
 
 // Reading and writing the numbers of an edge's data in graph files. Values are
 // written with max_digits10 so that a save/load round trip is exact.

@@ -1,8 +1,8 @@
-#include "graph/full_solver.h"
+#include "lrsvo/graph/full_solver.h"
 
 #include <chrono>
 
-#include "graph/parallel_for.h"
+#include "lrsvo/graph/parallel_for.h"
 
 namespace lrsvo {
 

@@ -2,8 +2,8 @@
 
 #include <memory>
 
-#include "graph/linear_solver.h"
-#include "graph/symmetric_backend.h"
+#include "lrsvo/graph/linear_solver.h"
+#include "lrsvo/graph/symmetric_backend.h"
 
 namespace lrsvo {
 

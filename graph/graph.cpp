@@ -1,10 +1,10 @@
-#include "graph/graph.h"
+#include "lrsvo/graph/graph.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

@@ -4,8 +4,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "graph/edge.h"
-#include "graph/vertex.h"
+#include "lrsvo/graph/edge.h"
+#include "lrsvo/graph/vertex.h"
 
 namespace lrsvo {
 

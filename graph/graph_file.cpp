@@ -1,12 +1,12 @@
-#include "graph/graph_file.h"
+#include "lrsvo/graph/graph_file.h"
 
 #include <fstream>
 #include <sstream>
 #include <vector>
 
-#include "graph/edge_io.h"
-#include "graph/error.h"
-#include "graph/registry.h"
+#include "lrsvo/graph/edge_io.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
 
@@ -14,11 +14,21 @@ namespace {
 
 constexpr const char* kHeader = "# lrsvo graph file v1";
 
+template <typename Product>
+std::unique_ptr<Product> createType(const std::string& tag, const char* kind) {
+  const Registry<Product>& registry = Registry<Product>::instance();
+  if (!registry.contains(tag))
+    throw Error(std::string("unknown ") + kind + " type '" + tag + "' (registered: " + registry.names() +
+                "; lrsvo's own types are added by registerVertexTypes(), registerEdgeTypes() and "
+                "registerConstraintTypes())");
+  return registry.create(tag);
+}
+
 void readVertex(std::istringstream& in, Graph& graph) {
   std::string tag;
   int id = 0, fixed = 0, marginalised = 0;
   if (!(in >> tag >> id >> fixed >> marginalised)) throw Error("VERTEX needs <tag> <id> <fixed> <marginalised>");
-  auto vertex = Registry<Vertex>::instance().create(tag);
+  auto vertex = createType<Vertex>(tag, "vertex");
   vertex->setId(id);
   vertex->setFixed(fixed != 0);
   vertex->setMarginalized(marginalised != 0);
@@ -31,7 +41,7 @@ void readVertex(std::istringstream& in, Graph& graph) {
 void readEdge(std::istringstream& in, Graph& graph) {
   std::string tag;
   if (!(in >> tag)) throw Error("EDGE needs a type tag");
-  auto edge = Registry<Edge>::instance().create(tag);
+  auto edge = createType<Edge>(tag, "edge");
   for (int k = 0; k < edge->vertexCount(); ++k) {
     int id = 0;
     if (!(in >> id)) throw Error(tag + ": missing vertex id " + std::to_string(k));

@@ -3,7 +3,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "graph/graph.h"
+#include "lrsvo/graph/graph.h"
 
 namespace lrsvo {
 
@@ -16,8 +16,9 @@ namespace lrsvo {
 //   END <vertex count> <edge count>
 //
 // Numbers are written with 17 significant digits, so save -> load is exact.
-// Types are looked up in Registry<Vertex> / Registry<Edge> by tag, so a
-// user's own types load once their library registers them.
+// Types are looked up in Registry<Vertex> / Registry<Edge> by tag: lrsvo's
+// own once registerVertexTypes(), registerEdgeTypes() (lrsvo/edges/edge_types.h)
+// or registerConstraintTypes() has run, a user's own once registered.
 void saveGraph(const Graph& graph, std::ostream& out);
 void saveGraphFile(const Graph& graph, const std::string& path);
 

@@ -2,7 +2,7 @@
 
 #include <Eigen/Core>
 
-#include "graph/block_system.h"
+#include "lrsvo/graph/block_system.h"
 
 namespace lrsvo {
 
@@ -12,10 +12,16 @@ struct LinearSolverTimes {
   double factorizeSeconds = 0.0;  // factorising and solving the (reduced) system
 };
 
+template <typename Product>
+class Registry;
+
 // Solves H x = rhs for the block system. Registered by name in
 // Registry<LinearSolver>: "dense", "cholmod", "schur_dense", "schur_cholmod".
 class LinearSolver {
  public:
+  // The graph library's linear solvers (Registry<LinearSolver> adds them on first use).
+  static void addBuiltins(Registry<LinearSolver>& registry);
+
   virtual ~LinearSolver() = default;
   // True when the solver eliminates marginalised vertices (needs them ordered last).
   virtual bool usesSchurOrdering() const = 0;

@@ -1,11 +1,12 @@
-#include "graph/cholmod_backend.h"
-#include "graph/full_solver.h"
-#include "graph/registry.h"
+#include "lrsvo/graph/builtin_plugins.h"
+#include "lrsvo/graph/cholmod_backend.h"
+#include "lrsvo/graph/full_solver.h"
+#include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
-namespace {
-const Registrar<LinearSolver> kRegistrar(
-    "cholmod", [] { return std::make_unique<FullSolver>(std::make_unique<CholmodBackend>()); },
-    "sparse supernodal Cholesky (CHOLMOD) of the whole system");
-}  // namespace
+void addCholmodSolver(Registry<LinearSolver>& registry) {
+  registry.add(
+      "cholmod", [] { return std::make_unique<FullSolver>(std::make_unique<CholmodBackend>()); },
+      "sparse supernodal Cholesky (CHOLMOD) of the whole system");
+}
 }  // namespace lrsvo

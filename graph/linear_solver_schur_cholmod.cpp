@@ -1,11 +1,12 @@
-#include "graph/cholmod_backend.h"
-#include "graph/registry.h"
-#include "graph/schur_solver.h"
+#include "lrsvo/graph/builtin_plugins.h"
+#include "lrsvo/graph/cholmod_backend.h"
+#include "lrsvo/graph/registry.h"
+#include "lrsvo/graph/schur_solver.h"
 
 namespace lrsvo {
-namespace {
-const Registrar<LinearSolver> kRegistrar(
-    "schur_cholmod", [] { return std::make_unique<SchurSolver>(std::make_unique<CholmodBackend>()); },
-    "Schur complement on marginalised vertices, CHOLMOD supernodal Cholesky of the reduced system");
-}  // namespace
+void addSchurCholmodSolver(Registry<LinearSolver>& registry) {
+  registry.add(
+      "schur_cholmod", [] { return std::make_unique<SchurSolver>(std::make_unique<CholmodBackend>()); },
+      "Schur complement on marginalised vertices, CHOLMOD supernodal Cholesky of the reduced system");
+}
 }  // namespace lrsvo

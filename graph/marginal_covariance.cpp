@@ -1,11 +1,11 @@
-#include "graph/marginal_covariance.h"
+#include "lrsvo/graph/marginal_covariance.h"
 
 #include <string>
 
 #include <Eigen/Cholesky>
 
-#include "graph/block_system.h"
-#include "graph/error.h"
+#include "lrsvo/graph/block_system.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

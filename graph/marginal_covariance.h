@@ -4,7 +4,7 @@
 
 #include <Eigen/Core>
 
-#include "graph/graph.h"
+#include "lrsvo/graph/graph.h"
 
 namespace lrsvo {
 

@@ -2,11 +2,11 @@
 
 #include <chrono>
 
-#include "graph/block_system.h"
-#include "graph/constraint_handler.h"
-#include "graph/linear_solver.h"
-#include "graph/solver_options.h"
-#include "graph/solver_summary.h"
+#include "lrsvo/graph/block_system.h"
+#include "lrsvo/graph/constraint_handler.h"
+#include "lrsvo/graph/linear_solver.h"
+#include "lrsvo/graph/solver_options.h"
+#include "lrsvo/graph/solver_summary.h"
 
 namespace lrsvo {
 
@@ -58,6 +58,9 @@ class OptimizationContext {
 // Registry<OptimizationAlgorithm> ("lm", "gn").
 class OptimizationAlgorithm {
  public:
+  // The graph library's algorithms (Registry<OptimizationAlgorithm> adds them on first use).
+  static void addBuiltins(Registry<OptimizationAlgorithm>& registry);
+
   virtual ~OptimizationAlgorithm() = default;
   // Runs from the current estimates; fills iterations, final cost, termination.
   virtual void run(OptimizationContext& context) = 0;

@@ -1,4 +1,4 @@
-#include "graph/optimization_algorithm.h"
+#include "lrsvo/graph/optimization_algorithm.h"
 
 #include <cmath>
 #include <cstdio>

@@ -1,13 +1,13 @@
-#include "graph/optimizer.h"
+#include "lrsvo/graph/optimizer.h"
 
 #include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "graph/error.h"
-#include "graph/optimization_algorithm.h"
-#include "graph/registry.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/optimization_algorithm.h"
+#include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
 

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "graph/constraint_handler.h"
-#include "graph/graph.h"
-#include "graph/solver_options.h"
-#include "graph/solver_summary.h"
+#include "lrsvo/graph/constraint_handler.h"
+#include "lrsvo/graph/graph.h"
+#include "lrsvo/graph/solver_options.h"
+#include "lrsvo/graph/solver_summary.h"
 
 namespace lrsvo {
 

@@ -1,9 +1,9 @@
-#include "graph/robust_kernel.h"
+#include "lrsvo/graph/robust_kernel.h"
 
 #include <cmath>
 
-#include "graph/error.h"
-#include "graph/registry.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
 
@@ -64,9 +64,12 @@ class TukeyKernel : public RobustKernel {
   }
 };
 
-LRSVO_REGISTER(RobustKernel, HuberKernel, "Huber", "quadratic inside delta, linear outside");
-LRSVO_REGISTER(RobustKernel, CauchyKernel, "Cauchy", "logarithmic growth, delta^2 log(1 + s / delta^2)");
-LRSVO_REGISTER(RobustKernel, TukeyKernel, "Tukey", "biweight, constant beyond delta");
-
 }  // namespace
+
+void RobustKernel::addBuiltins(Registry<RobustKernel>& registry) {
+  registry.addType<HuberKernel>("Huber", "quadratic inside delta, linear outside");
+  registry.addType<CauchyKernel>("Cauchy", "logarithmic growth, delta^2 log(1 + s / delta^2)");
+  registry.addType<TukeyKernel>("Tukey", "biweight, constant beyond delta");
+}
+
 }  // namespace lrsvo

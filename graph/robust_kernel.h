@@ -5,10 +5,16 @@
 
 namespace lrsvo {
 
+template <typename Product>
+class Registry;
+
 // A robust loss rho(s) on the squared whitened residual norm s, Ceres'
 // convention: an edge costs 1/2 rho(s). rho(s) = s without a kernel.
 class RobustKernel {
  public:
+  // The graph library's kernels (Registry<RobustKernel> adds them on first use).
+  static void addBuiltins(Registry<RobustKernel>& registry);
+
   virtual ~RobustKernel() = default;
   virtual const char* name() const = 0;
   // Returns rho(s) and writes rho'(s) (the IRLS weight) to `weight`.

@@ -1,4 +1,4 @@
-#include "graph/schur_solver.h"
+#include "lrsvo/graph/schur_solver.h"
 
 #include <chrono>
 #include <map>
@@ -6,8 +6,8 @@
 
 #include <Eigen/Cholesky>
 
-#include "graph/error.h"
-#include "graph/parallel_for.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/parallel_for.h"
 
 namespace lrsvo {
 

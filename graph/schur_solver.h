@@ -3,8 +3,8 @@
 #include <memory>
 #include <vector>
 
-#include "graph/linear_solver.h"
-#include "graph/symmetric_backend.h"
+#include "lrsvo/graph/linear_solver.h"
+#include "lrsvo/graph/symmetric_backend.h"
 
 namespace lrsvo {
 

@@ -1,4 +1,4 @@
-#include "graph/solver_summary.h"
+#include "lrsvo/graph/solver_summary.h"
 
 #include <cstdio>
 #include <sstream>

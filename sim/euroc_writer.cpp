@@ -1,4 +1,4 @@
-#include "sim/euroc_writer.h"
+#include "lrsvo/sim/euroc_writer.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,7 +6,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {

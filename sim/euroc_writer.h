@@ -6,13 +6,13 @@
 
 #include <Eigen/Geometry>
 
-#include "frontend/frame_source.h"
-#include "frontend/rig.h"
+#include "lrsvo/frontend/datasets/frame_source.h"
+#include "lrsvo/frontend/odometry/rig.h"
 
 namespace lrsvo {
 
 // Writes a stereo sequence in the EuRoC MAV layout, as
-// frontend/euroc_reader.h reads it back:
+// frontend/datasets/euroc_reader.h reads it back:
 //   DIR/mav0/body.yaml
 //   DIR/mav0/cam<k>/data/<ns>.png, cam<k>/data.csv ("#timestamp [ns],filename"),
 //   cam<k>/sensor.yaml (T_BS with body = cam0, rate_hz, resolution,

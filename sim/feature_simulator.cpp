@@ -1,4 +1,4 @@
-#include "sim/feature_simulator.h"
+#include "lrsvo/sim/feature_simulator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,11 +6,11 @@
 #include <string>
 #include <utility>
 
-#include "graph/error.h"
-#include "sim/flight_truth.h"
-#include "sim/footprint.h"
-#include "sim/scene_point_grid.h"
-#include "sim/seed_mix.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/flight_truth.h"
+#include "lrsvo/sim/footprint.h"
+#include "lrsvo/sim/scene_point_grid.h"
+#include "lrsvo/sim/seed_mix.h"
 
 namespace lrsvo {
 namespace {

@@ -5,11 +5,11 @@
 
 #include <Eigen/Geometry>
 
-#include "frontend/observations.h"
-#include "frontend/rig.h"
-#include "sim/flight.h"
-#include "sim/rig_deformation.h"
-#include "sim/terrain.h"
+#include "lrsvo/frontend/odometry/observations.h"
+#include "lrsvo/frontend/odometry/rig.h"
+#include "lrsvo/sim/flight.h"
+#include "lrsvo/sim/rig_deformation.h"
+#include "lrsvo/sim/terrain.h"
 
 namespace lrsvo {
 

@@ -1,4 +1,4 @@
-#include "sim/flight.h"
+#include "lrsvo/sim/flight.h"
 
 #include <algorithm>
 #include <array>
@@ -7,9 +7,9 @@
 #include <random>
 #include <string>
 
-#include "graph/error.h"
-#include "sim/flight_path.h"
-#include "sim/seed_mix.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/flight_path.h"
+#include "lrsvo/sim/seed_mix.h"
 
 namespace lrsvo {
 namespace {

@@ -1,10 +1,10 @@
-#include "sim/flight_path.h"
+#include "lrsvo/sim/flight_path.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <Eigen/Core>
 
-#include "sim/flight.h"
+#include "lrsvo/sim/flight.h"
 
 namespace lrsvo {
 

@@ -1,8 +1,8 @@
-#include "sim/flight_truth.h"
+#include "lrsvo/sim/flight_truth.h"
 
 #include <string>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

@@ -4,10 +4,10 @@
 
 #include <Eigen/Geometry>
 
-#include "frontend/rig.h"
-#include "sim/flight.h"
-#include "sim/rig_deformation.h"
-#include "sim/terrain.h"
+#include "lrsvo/frontend/odometry/rig.h"
+#include "lrsvo/sim/flight.h"
+#include "lrsvo/sim/rig_deformation.h"
+#include "lrsvo/sim/terrain.h"
 
 namespace lrsvo {
 

@@ -1,9 +1,9 @@
-#include "sim/footprint.h"
+#include "lrsvo/sim/footprint.h"
 
 #include <cmath>
 #include <string>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

@@ -4,7 +4,7 @@
 
 #include <Eigen/Geometry>
 
-#include "frontend/rig.h"
+#include "lrsvo/frontend/odometry/rig.h"
 
 namespace lrsvo {
 

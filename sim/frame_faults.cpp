@@ -1,10 +1,10 @@
-#include "sim/frame_faults.h"
+#include "lrsvo/sim/frame_faults.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {

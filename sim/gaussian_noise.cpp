@@ -1,11 +1,11 @@
-#include "sim/gaussian_noise.h"
+#include "lrsvo/sim/gaussian_noise.h"
 
 #include <array>
 #include <cmath>
 #include <memory>
 #include <numbers>
 
-#include "sim/seed_mix.h"
+#include "lrsvo/sim/seed_mix.h"
 
 namespace lrsvo {
 namespace {

@@ -1,4 +1,4 @@
-#include "sim/ground_texture.h"
+#include "lrsvo/sim/ground_texture.h"
 
 #include <algorithm>
 #include <array>
@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "graph/error.h"
-#include "sim/inline_math.h"
-#include "sim/seed_mix.h"
-#include "sim/value_noise.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/inline_math.h"
+#include "lrsvo/sim/seed_mix.h"
+#include "lrsvo/sim/value_noise.h"
 
 namespace lrsvo {
 

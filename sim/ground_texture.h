@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "sim/surface_texture.h"
-#include "sim/texel_tiles.h"
+#include "lrsvo/sim/surface_texture.h"
+#include "lrsvo/sim/texel_tiles.h"
 
 namespace lrsvo {
 

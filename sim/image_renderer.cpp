@@ -1,4 +1,4 @@
-#include "sim/image_renderer.h"
+#include "lrsvo/sim/image_renderer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,11 +9,11 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "graph/error.h"
-#include "sim/gaussian_noise.h"
-#include "sim/pool_for.h"
-#include "sim/seed_mix.h"
-#include "sim/surface_view.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/gaussian_noise.h"
+#include "lrsvo/sim/pool_for.h"
+#include "lrsvo/sim/seed_mix.h"
+#include "lrsvo/sim/surface_view.h"
 
 namespace lrsvo {
 namespace {

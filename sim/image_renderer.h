@@ -5,9 +5,9 @@
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
-#include "frontend/rig.h"
-#include "sim/surface_texture.h"
-#include "sim/terrain.h"
+#include "lrsvo/frontend/odometry/rig.h"
+#include "lrsvo/sim/surface_texture.h"
+#include "lrsvo/sim/terrain.h"
 
 namespace lrsvo {
 

@@ -1,4 +1,4 @@
-#include "sim/rig_deformation.h"
+#include "lrsvo/sim/rig_deformation.h"
 
 #include <array>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <random>
 #include <string>
 
-#include "graph/error.h"
-#include "sim/seed_mix.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/seed_mix.h"
 
 namespace lrsvo {
 namespace {

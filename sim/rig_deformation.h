@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "vertices/vertex_stereo_extrinsic.h"
+#include "lrsvo/vertices/vertex_stereo_extrinsic.h"
 
 namespace lrsvo {
 

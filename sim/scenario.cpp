@@ -1,4 +1,4 @@
-#include "sim/scenario.h"
+#include "lrsvo/sim/scenario.h"
 
 #include <climits>
 #include <cmath>
@@ -12,7 +12,7 @@
 
 #include <opencv2/core/persistence.hpp>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {

@@ -3,14 +3,14 @@
 #include <cstdint>
 #include <string>
 
-#include "frontend/rig.h"
-#include "sim/feature_simulator.h"
-#include "sim/flight.h"
-#include "sim/frame_faults.h"
-#include "sim/ground_texture.h"
-#include "sim/image_renderer.h"
-#include "sim/rig_deformation.h"
-#include "sim/terrain.h"
+#include "lrsvo/frontend/odometry/rig.h"
+#include "lrsvo/sim/feature_simulator.h"
+#include "lrsvo/sim/flight.h"
+#include "lrsvo/sim/frame_faults.h"
+#include "lrsvo/sim/ground_texture.h"
+#include "lrsvo/sim/image_renderer.h"
+#include "lrsvo/sim/rig_deformation.h"
+#include "lrsvo/sim/terrain.h"
 
 namespace lrsvo {
 

@@ -1,11 +1,11 @@
-#include "sim/scene_point_grid.h"
+#include "lrsvo/sim/scene_point_grid.h"
 
 #include <cmath>
 #include <random>
 #include <string>
 
-#include "graph/error.h"
-#include "sim/seed_mix.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/seed_mix.h"
 
 namespace lrsvo {
 namespace {

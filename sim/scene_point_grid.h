@@ -7,7 +7,7 @@
 
 #include <Eigen/Geometry>
 
-#include "sim/terrain.h"
+#include "lrsvo/sim/terrain.h"
 
 namespace lrsvo {
 

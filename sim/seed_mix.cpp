@@ -1,4 +1,4 @@
-#include "sim/seed_mix.h"
+#include "lrsvo/sim/seed_mix.h"
 
 namespace lrsvo {
 namespace {

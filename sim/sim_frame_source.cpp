@@ -1,9 +1,9 @@
-#include "sim/sim_frame_source.h"
+#include "lrsvo/sim/sim_frame_source.h"
 
 #include <string>
 #include <utility>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 

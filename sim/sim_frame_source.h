@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "frontend/frame_source.h"
-#include "sim/flight_truth.h"
-#include "sim/ground_texture.h"
-#include "sim/image_renderer.h"
-#include "sim/scenario.h"
-#include "sim/terrain.h"
+#include "lrsvo/frontend/datasets/frame_source.h"
+#include "lrsvo/sim/flight_truth.h"
+#include "lrsvo/sim/ground_texture.h"
+#include "lrsvo/sim/image_renderer.h"
+#include "lrsvo/sim/scenario.h"
+#include "lrsvo/sim/terrain.h"
 
 namespace lrsvo {
 

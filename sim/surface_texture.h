@@ -4,8 +4,8 @@
 
 #include <Eigen/Core>
 
-#include "sim/terrain.h"
-#include "sim/texel_tiles.h"
+#include "lrsvo/sim/terrain.h"
+#include "lrsvo/sim/texel_tiles.h"
 
 namespace lrsvo {
 

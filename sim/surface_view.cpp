@@ -1,4 +1,4 @@
-#include "sim/surface_view.h"
+#include "lrsvo/sim/surface_view.h"
 
 #include <algorithm>
 #include <array>
@@ -7,9 +7,9 @@
 #include <limits>
 #include <string>
 
-#include "graph/error.h"
-#include "sim/footprint.h"
-#include "sim/pool_for.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/footprint.h"
+#include "lrsvo/sim/pool_for.h"
 
 namespace lrsvo {
 namespace {

@@ -5,10 +5,10 @@
 
 #include <Eigen/Geometry>
 
-#include "frontend/rig.h"
-#include "sim/surface_texture.h"
-#include "sim/terrain.h"
-#include "sim/texel_tiles.h"
+#include "lrsvo/frontend/odometry/rig.h"
+#include "lrsvo/sim/surface_texture.h"
+#include "lrsvo/sim/terrain.h"
+#include "lrsvo/sim/texel_tiles.h"
 
 namespace lrsvo {
 

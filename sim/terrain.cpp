@@ -1,4 +1,4 @@
-#include "sim/terrain.h"
+#include "lrsvo/sim/terrain.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <random>
 #include <string>
 
-#include "graph/error.h"
-#include "sim/seed_mix.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/seed_mix.h"
 
 namespace lrsvo {
 namespace {

@@ -1,12 +1,12 @@
-#include "sim/texel_tiles.h"
+#include "lrsvo/sim/texel_tiles.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
 
-#include "graph/error.h"
-#include "sim/pool_for.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/pool_for.h"
 
 namespace lrsvo {
 std::size_t TexelTiles::KeyHash::operator()(const Key& k) const {

@@ -10,7 +10,7 @@
 
 #include <Eigen/Geometry>
 
-#include "sim/inline_math.h"
+#include "lrsvo/sim/inline_math.h"
 
 namespace lrsvo {
 

@@ -1,7 +1,7 @@
 // TexelTiles' four-point path (sim/cpu_features.h): every operation the
 // scalar sample() makes, in its order, four points at a time.
-#include "sim/cpu_features.h"
-#include "sim/texel_tiles.h"
+#include "lrsvo/sim/cpu_features.h"
+#include "lrsvo/sim/texel_tiles.h"
 
 namespace lrsvo {
 

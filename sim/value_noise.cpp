@@ -1,12 +1,12 @@
-#include "sim/value_noise.h"
+#include "lrsvo/sim/value_noise.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-#include "graph/error.h"
-#include "sim/cpu_features.h"
-#include "sim/inline_math.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/cpu_features.h"
+#include "lrsvo/sim/inline_math.h"
 
 namespace lrsvo {
 

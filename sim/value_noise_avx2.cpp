@@ -3,9 +3,9 @@
 // (sim/cpu_features.h).
 #include <cstdint>
 
-#include "sim/cpu_features.h"
-#include "sim/inline_math.h"
-#include "sim/value_noise.h"
+#include "lrsvo/sim/cpu_features.h"
+#include "lrsvo/sim/inline_math.h"
+#include "lrsvo/sim/value_noise.h"
 
 namespace lrsvo {
 

@@ -1,4 +1,4 @@
-#include "sim/window_problem.h"
+#include "lrsvo/sim/window_problem.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,11 +7,11 @@
 #include <random>
 #include <string>
 
-#include "edges/edge_project_base.h"
-#include "edges/edge_project_secondary.h"
-#include "graph/error.h"
-#include "graph/robust_kernel.h"
-#include "vertices/so3.h"
+#include "lrsvo/edges/edge_project_base.h"
+#include "lrsvo/edges/edge_project_secondary.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/robust_kernel.h"
+#include "lrsvo/vertices/so3.h"
 
 namespace lrsvo {
 namespace {

@@ -6,13 +6,13 @@
 
 #include <Eigen/Geometry>
 
-#include "constraints/bounds.h"
-#include "edges/pinhole.h"
-#include "graph/graph.h"
-#include "vertices/vertex_point3.h"
-#include "vertices/vertex_pose.h"
-#include "vertices/vertex_scale.h"
-#include "vertices/vertex_stereo_extrinsic.h"
+#include "lrsvo/constraints/bounds.h"
+#include "lrsvo/edges/pinhole.h"
+#include "lrsvo/graph/graph.h"
+#include "lrsvo/vertices/vertex_point3.h"
+#include "lrsvo/vertices/vertex_pose.h"
+#include "lrsvo/vertices/vertex_scale.h"
+#include "lrsvo/vertices/vertex_stereo_extrinsic.h"
 
 namespace lrsvo {
 

@@ -2,8 +2,8 @@
 
 #include <cstdint>
 
-#include "frontend/initialization_result.h"
-#include "sim/feature_simulator.h"
+#include "lrsvo/frontend/odometry/initialization_result.h"
+#include "lrsvo/sim/feature_simulator.h"
 
 namespace lrsvo::test {
 

@@ -11,9 +11,9 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "frontend/descriptor_alignment.h"
-#include "frontend/feature_tracker.h"
-#include "frontend/klt.h"
+#include "lrsvo/frontend/features/descriptor_alignment.h"
+#include "lrsvo/frontend/features/feature_tracker.h"
+#include "lrsvo/frontend/features/klt.h"
 
 namespace lrsvo {
 namespace {

@@ -14,10 +14,10 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "eval/odometry_run.h"
-#include "frontend/euroc_reader.h"
-#include "frontend/frame_check.h"
-#include "graph/error.h"
+#include "lrsvo/frontend/datasets/euroc_reader.h"
+#include "lrsvo/frontend/features/frame_check.h"
+#include "lrsvo/frontend/odometry/odometry_run.h"
+#include "lrsvo/graph/error.h"
 #include "unit_tests/shared_data.h"
 #include "unit_tests/temp_folder.h"
 

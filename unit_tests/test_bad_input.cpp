@@ -11,11 +11,11 @@
 
 #include <gtest/gtest.h>
 
-#include "graph/error.h"
-#include "graph/graph_file.h"
-#include "graph/optimizer.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/graph_file.h"
+#include "lrsvo/graph/optimizer.h"
+#include "lrsvo/vertices/vertex_bal_camera.h"
 #include "unit_tests/test_problems.h"
-#include "vertices/vertex_bal_camera.h"
 
 namespace lrsvo::test {
 namespace {

@@ -14,12 +14,12 @@
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
 
-#include "edges/bal_problem.h"
-#include "edges/edge_bal_projection.h"
-#include "graph/error.h"
-#include "graph/optimizer.h"
-#include "vertices/vertex_bal_camera.h"
-#include "vertices/vertex_point3.h"
+#include "lrsvo/edges/edge_bal_projection.h"
+#include "lrsvo/frontend/datasets/bal_problem.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/optimizer.h"
+#include "lrsvo/vertices/vertex_bal_camera.h"
+#include "lrsvo/vertices/vertex_point3.h"
 
 namespace lrsvo {
 namespace {

@@ -10,12 +10,12 @@
 
 #include <gtest/gtest.h>
 
-#include "constraints/constraint_method.h"
-#include "graph/base_cost_edge.h"
-#include "graph/block_system.h"
-#include "graph/error.h"
-#include "graph/registry.h"
-#include "sim/window_problem.h"
+#include "lrsvo/constraints/constraint_method.h"
+#include "lrsvo/graph/base_cost_edge.h"
+#include "lrsvo/graph/block_system.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/registry.h"
+#include "lrsvo/sim/window_problem.h"
 
 // The constraint plugins on seeded stereo windows (issue 3): the box holds,
 // KKT holds at the solution, inactive bounds change nothing, and with active

@@ -6,12 +6,13 @@
 
 #include <gtest/gtest.h>
 
-#include "edges/edge_extrinsic_rate_prior.h"
-#include "edges/edge_project_secondary.h"
-#include "edges/edge_project_secondary_drifting.h"
-#include "graph/graph_file.h"
+#include "lrsvo/edges/edge_extrinsic_rate_prior.h"
+#include "lrsvo/edges/edge_project_secondary.h"
+#include "lrsvo/edges/edge_project_secondary_drifting.h"
+#include "lrsvo/edges/edge_types.h"
+#include "lrsvo/graph/graph_file.h"
+#include "lrsvo/vertices/so3.h"
 #include "test_problems.h"
-#include "vertices/so3.h"
 
 namespace lrsvo::test {
 namespace {
@@ -126,6 +127,7 @@ TEST(ExtrinsicRateEdges, GraphFileRoundTripKeepsTheRate) {
   saveGraph(graph, file);
   EXPECT_NE(file.str().find(EdgeProjectSecondaryDrifting::kTypeTag), std::string::npos);
   EXPECT_NE(file.str().find(VertexExtrinsicRate::kTypeTag), std::string::npos);
+  registerEdgeTypes();
   Graph loaded = loadGraph(file, "extrinsic rate graph");
   EXPECT_DOUBLE_EQ(loaded.cost(), graph.cost());
   EXPECT_GT(graph.cost(), 0.0);

@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/bundle_graph.h"
-#include "frontend/sliding_window.h"
-#include "graph/error.h"
-#include "sim/feature_simulator.h"
+#include "lrsvo/frontend/odometry/bundle_graph.h"
+#include "lrsvo/frontend/odometry/sliding_window.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/feature_simulator.h"
 
 namespace lrsvo {
 namespace {

@@ -10,7 +10,7 @@
 #include <opencv2/core.hpp>
 
 #include "apps/failure_report.h"
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo::cli {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/gaussian_noise.h"
+#include "lrsvo/sim/gaussian_noise.h"
 
 namespace lrsvo {
 namespace {

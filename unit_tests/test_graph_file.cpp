@@ -9,9 +9,10 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "edges/edge_bal_projection.h"
-#include "graph/graph_file.h"
-#include "graph/optimizer.h"
+#include "lrsvo/edges/edge_bal_projection.h"
+#include "lrsvo/edges/edge_types.h"
+#include "lrsvo/graph/graph_file.h"
+#include "lrsvo/graph/optimizer.h"
 #include "unit_tests/test_problems.h"
 
 namespace lrsvo::test {
@@ -164,6 +165,7 @@ TEST(GraphFile, FileOnDiskRoundTrips) {
   const std::filesystem::path path =
       std::filesystem::temp_directory_path() / ("lrsvo_test_graph_" + std::to_string(::getpid()) + ".graph");
   saveGraphFile(graph, path.string());
+  registerEdgeTypes();
   const Graph loaded = loadGraphFile(path.string());
   std::filesystem::remove(path);
   EXPECT_EQ(firstDifference(saveToString(loaded), saveToString(graph)), "");

@@ -3,9 +3,9 @@
 
 #include <gtest/gtest.h>
 
-#include "edges/gtsam_stereo_vo.h"
-#include "graph/error.h"
-#include "graph/optimizer.h"
+#include "lrsvo/frontend/datasets/gtsam_stereo_vo.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/optimizer.h"
 
 namespace lrsvo::test {
 namespace {

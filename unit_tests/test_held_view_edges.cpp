@@ -6,12 +6,13 @@
 
 #include <gtest/gtest.h>
 
-#include "edges/edge_project_base.h"
-#include "edges/edge_project_held_view.h"
-#include "edges/edge_scale_prior.h"
-#include "graph/graph_file.h"
+#include "lrsvo/edges/edge_project_base.h"
+#include "lrsvo/edges/edge_project_held_view.h"
+#include "lrsvo/edges/edge_scale_prior.h"
+#include "lrsvo/edges/edge_types.h"
+#include "lrsvo/graph/graph_file.h"
+#include "lrsvo/vertices/so3.h"
 #include "test_problems.h"
-#include "vertices/so3.h"
 
 namespace lrsvo::test {
 namespace {
@@ -102,6 +103,7 @@ TEST(HeldViewEdges, GraphFileRoundTripKeepsTheHeldView) {
   saveGraph(graph, file);
   EXPECT_NE(file.str().find(EdgeProjectHeldView::kTypeTag), std::string::npos);
   EXPECT_NE(file.str().find(EdgeScalePrior::kTypeTag), std::string::npos);
+  registerEdgeTypes();
   Graph loaded = loadGraph(file, "held view graph");
   EXPECT_DOUBLE_EQ(loaded.cost(), graph.cost());
   EXPECT_GT(graph.cost(), 0.0);

@@ -11,15 +11,15 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "frontend/euroc_reader.h"
-#include "frontend/feature_tracker.h"
-#include "frontend/image_front_end.h"
-#include "frontend/kitti_reader.h"
-#include "frontend/rig_extrinsic.h"
-#include "frontend/source_factory.h"
-#include "frontend/stereo_matcher.h"
-#include "frontend/undistortion.h"
-#include "graph/error.h"
+#include "lrsvo/frontend/datasets/euroc_reader.h"
+#include "lrsvo/frontend/datasets/kitti_reader.h"
+#include "lrsvo/frontend/datasets/source_factory.h"
+#include "lrsvo/frontend/features/feature_tracker.h"
+#include "lrsvo/frontend/features/image_front_end.h"
+#include "lrsvo/frontend/features/stereo_matcher.h"
+#include "lrsvo/frontend/features/undistortion.h"
+#include "lrsvo/frontend/odometry/rig_extrinsic.h"
+#include "lrsvo/graph/error.h"
 #include "unit_tests/shared_data.h"
 
 namespace lrsvo {

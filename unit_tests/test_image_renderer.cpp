@@ -10,13 +10,13 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "graph/error.h"
-#include "sim/euroc_writer.h"
-#include "sim/ground_texture.h"
-#include "sim/image_renderer.h"
-#include "sim/scenario.h"
-#include "sim/sim_frame_source.h"
-#include "sim/surface_view.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/euroc_writer.h"
+#include "lrsvo/sim/ground_texture.h"
+#include "lrsvo/sim/image_renderer.h"
+#include "lrsvo/sim/scenario.h"
+#include "lrsvo/sim/sim_frame_source.h"
+#include "lrsvo/sim/surface_view.h"
 
 namespace lrsvo {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "eval/initialization_trial.h"
-#include "graph/error.h"
+#include "lrsvo/eval/initialization_trial.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {

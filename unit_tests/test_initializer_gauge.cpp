@@ -6,12 +6,12 @@
 #include <gtest/gtest.h>
 #include <Eigen/Cholesky>
 
-#include "edges/edge_centre_distance.h"
-#include "graph/block_system.h"
-#include "graph/marginal_covariance.h"
-#include "sim/window_problem.h"
+#include "lrsvo/edges/edge_centre_distance.h"
+#include "lrsvo/graph/block_system.h"
+#include "lrsvo/graph/marginal_covariance.h"
+#include "lrsvo/sim/window_problem.h"
+#include "lrsvo/vertices/so3.h"
 #include "unit_tests/test_problems.h"
-#include "vertices/so3.h"
 
 namespace lrsvo::test {
 namespace {

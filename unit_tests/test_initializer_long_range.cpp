@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/long_range_initializer.h"
-#include "frontend/monocular_initializer.h"
+#include "lrsvo/frontend/odometry/long_range_initializer.h"
+#include "lrsvo/frontend/odometry/monocular_initializer.h"
 #include "unit_tests/initializer_flight.h"
 
 // Measured on initializationFlight (unit_tests/initializer_flight.h) at

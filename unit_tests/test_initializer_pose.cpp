@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/pose_estimator.h"
-#include "vertices/so3.h"
+#include "lrsvo/frontend/odometry/pose_estimator.h"
+#include "lrsvo/vertices/so3.h"
 
 namespace lrsvo {
 namespace {

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "frontend/rigid_stereo_initializer.h"
+#include "lrsvo/frontend/odometry/rigid_stereo_initializer.h"
 #include "unit_tests/initializer_flight.h"
 
 // The paper's control (a). A rigid rig trusts its calibration, so a pitch

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/two_view.h"
-#include "vertices/so3.h"
+#include "lrsvo/frontend/odometry/two_view.h"
+#include "lrsvo/vertices/so3.h"
 
 namespace lrsvo {
 namespace {

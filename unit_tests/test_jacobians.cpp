@@ -8,12 +8,12 @@
 #include <gtest/gtest.h>
 #include <Eigen/Cholesky>
 
-#include "edges/edge_bal_projection.h"
-#include "graph/block_system.h"
-#include "graph/robust_kernel.h"
+#include "lrsvo/edges/edge_bal_projection.h"
+#include "lrsvo/graph/block_system.h"
+#include "lrsvo/graph/robust_kernel.h"
+#include "lrsvo/vertices/so3.h"
+#include "lrsvo/vertices/vertex_bal_camera.h"
 #include "unit_tests/test_problems.h"
-#include "vertices/so3.h"
-#include "vertices/vertex_bal_camera.h"
 
 namespace lrsvo::test {
 namespace {

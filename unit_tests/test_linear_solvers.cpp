@@ -12,12 +12,12 @@
 #include <gtest/gtest.h>
 #include <Eigen/Cholesky>
 
-#include "graph/base_edge.h"
-#include "graph/block_system.h"
-#include "graph/linear_solver.h"
-#include "graph/optimizer.h"
-#include "graph/registry.h"
-#include "graph/schur_solver.h"
+#include "lrsvo/graph/base_edge.h"
+#include "lrsvo/graph/block_system.h"
+#include "lrsvo/graph/linear_solver.h"
+#include "lrsvo/graph/optimizer.h"
+#include "lrsvo/graph/registry.h"
+#include "lrsvo/graph/schur_solver.h"
 #include "unit_tests/test_problems.h"
 
 namespace lrsvo::test {

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/motion_model.h"
-#include "graph/error.h"
+#include "lrsvo/frontend/odometry/motion_model.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {

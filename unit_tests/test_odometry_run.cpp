@@ -9,12 +9,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "eval/odometry_run.h"
-#include "eval/run_report.h"
-#include "frontend/euroc_reader.h"
-#include "sim/feature_simulator.h"
-#include "sim/scenario.h"
-#include "sim/sim_frame_source.h"
+#include "lrsvo/eval/run_report.h"
+#include "lrsvo/frontend/datasets/euroc_reader.h"
+#include "lrsvo/frontend/odometry/odometry_run.h"
+#include "lrsvo/sim/feature_simulator.h"
+#include "lrsvo/sim/scenario.h"
+#include "lrsvo/sim/sim_frame_source.h"
 #include "unit_tests/shared_data.h"
 
 namespace lrsvo {

@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "graph/linear_solver.h"
-#include "graph/optimizer.h"
-#include "graph/registry.h"
+#include "lrsvo/graph/linear_solver.h"
+#include "lrsvo/graph/optimizer.h"
+#include "lrsvo/graph/registry.h"
 #include "unit_tests/test_problems.h"
 
 namespace lrsvo::test {

@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/outlier_threshold.h"
-#include "frontend/sliding_window.h"
-#include "graph/error.h"
-#include "sim/feature_simulator.h"
+#include "lrsvo/frontend/odometry/outlier_threshold.h"
+#include "lrsvo/frontend/odometry/sliding_window.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/feature_simulator.h"
 
 namespace lrsvo {
 namespace {

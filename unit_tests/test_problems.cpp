@@ -4,12 +4,14 @@
 #include <random>
 #include <vector>
 
-#include "edges/edge_bal_projection.h"
-#include "graph/edge_io.h"
-#include "graph/graph_file.h"
-#include "graph/registry.h"
-#include "vertices/so3.h"
-#include "vertices/vertex_bal_camera.h"
+#include "lrsvo/constraints/constraint_types.h"
+#include "lrsvo/edges/edge_bal_projection.h"
+#include "lrsvo/edges/edge_types.h"
+#include "lrsvo/graph/edge_io.h"
+#include "lrsvo/graph/graph_file.h"
+#include "lrsvo/graph/registry.h"
+#include "lrsvo/vertices/so3.h"
+#include "lrsvo/vertices/vertex_bal_camera.h"
 
 namespace lrsvo::test {
 
@@ -274,6 +276,8 @@ std::string saveToString(const Graph& graph) {
 }
 
 Graph loadFromString(const std::string& text, const std::string& sourceName) {
+  registerEdgeTypes();
+  registerConstraintTypes();
   std::istringstream in(text);
   return loadGraph(in, sourceName);
 }

@@ -14,12 +14,12 @@
 #include <gtest/gtest.h>
 #include <Eigen/Core>
 
-#include "graph/base_cost_edge.h"
-#include "graph/base_edge.h"
-#include "graph/block_system.h"
-#include "graph/graph.h"
-#include "vertices/vertex_point3.h"
-#include "vertices/vertex_pose.h"
+#include "lrsvo/graph/base_cost_edge.h"
+#include "lrsvo/graph/base_edge.h"
+#include "lrsvo/graph/block_system.h"
+#include "lrsvo/graph/graph.h"
+#include "lrsvo/vertices/vertex_point3.h"
+#include "lrsvo/vertices/vertex_pose.h"
 
 namespace lrsvo::test {
 

@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "graph/error.h"
-#include "graph/registry.h"
-#include "graph/robust_kernel.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/registry.h"
+#include "lrsvo/graph/robust_kernel.h"
 #include "unit_tests/test_problems.h"
 
 namespace lrsvo::test {

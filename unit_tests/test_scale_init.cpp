@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "constraints/constraint_method.h"
-#include "sim/window_problem.h"
+#include "lrsvo/constraints/constraint_method.h"
+#include "lrsvo/sim/window_problem.h"
 
 // The paper's Fig. 18 claim on a seeded initialisation window (method.md,
 // long-range initialisation): 10 frames at 70 m, 60 m flown at 30 m/s (one

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "graph/error.h"
-#include "sim/rig_deformation.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/rig_deformation.h"
 
 namespace lrsvo {
 namespace {

@@ -9,10 +9,10 @@
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 
-#include "frontend/frame_check.h"
-#include "graph/error.h"
-#include "sim/scenario.h"
-#include "sim/sim_frame_source.h"
+#include "lrsvo/frontend/features/frame_check.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/scenario.h"
+#include "lrsvo/sim/sim_frame_source.h"
 
 namespace lrsvo {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "graph/error.h"
-#include "sim/feature_simulator.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/feature_simulator.h"
 
 namespace lrsvo {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "graph/error.h"
-#include "sim/flight.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/flight.h"
 
 namespace lrsvo {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "graph/error.h"
-#include "sim/terrain.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/terrain.h"
 
 namespace lrsvo {
 namespace {

@@ -2,10 +2,10 @@
 
 #include <gtest/gtest.h>
 
-#include "edges/edge_project_base.h"
-#include "edges/edge_project_secondary.h"
+#include "lrsvo/edges/edge_project_base.h"
+#include "lrsvo/edges/edge_project_secondary.h"
+#include "lrsvo/vertices/so3.h"
 #include "test_problems.h"
-#include "vertices/so3.h"
 
 namespace lrsvo::test {
 namespace {

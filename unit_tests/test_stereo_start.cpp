@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/stereo_start.h"
-#include "graph/error.h"
+#include "lrsvo/frontend/odometry/stereo_start.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {

@@ -3,15 +3,15 @@
 
 #include <gtest/gtest.h>
 
-#include "eval/deformed_pair.h"
-#include "eval/depth_resolution.h"
-#include "eval/line_rig.h"
-#include "eval/paper_cameras.h"
-#include "eval/sample_statistics.h"
-#include "eval/triangulation_trials.h"
-#include "frontend/epipolar.h"
-#include "frontend/triangulation.h"
-#include "graph/error.h"
+#include "lrsvo/eval/deformed_pair.h"
+#include "lrsvo/eval/depth_resolution.h"
+#include "lrsvo/eval/line_rig.h"
+#include "lrsvo/eval/paper_cameras.h"
+#include "lrsvo/eval/sample_statistics.h"
+#include "lrsvo/eval/triangulation_trials.h"
+#include "lrsvo/frontend/features/epipolar.h"
+#include "lrsvo/frontend/odometry/triangulation.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo {
 namespace {

@@ -7,9 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "eval/study.h"
-#include "eval/study_index.h"
-#include "graph/error.h"
+#include "lrsvo/eval/study.h"
+#include "lrsvo/eval/study_index.h"
+#include "lrsvo/graph/error.h"
 #include "unit_tests/temp_folder.h"
 
 namespace lrsvo {

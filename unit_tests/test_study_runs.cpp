@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "eval/study.h"
+#include "lrsvo/eval/study.h"
 #include "unit_tests/temp_folder.h"
 
 namespace lrsvo {

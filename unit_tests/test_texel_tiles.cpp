@@ -11,9 +11,9 @@
 
 #include <gtest/gtest.h>
 
-#include "graph/error.h"
-#include "sim/inline_math.h"
-#include "sim/texel_tiles.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/sim/inline_math.h"
+#include "lrsvo/sim/texel_tiles.h"
 
 namespace lrsvo {
 namespace {

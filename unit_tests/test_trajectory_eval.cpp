@@ -7,11 +7,11 @@
 
 #include <gtest/gtest.h>
 
-#include "eval/trajectory_alignment.h"
-#include "eval/trajectory_association.h"
-#include "eval/trajectory_metrics.h"
-#include "frontend/pose_file.h"
-#include "graph/error.h"
+#include "lrsvo/eval/trajectory_alignment.h"
+#include "lrsvo/eval/trajectory_association.h"
+#include "lrsvo/eval/trajectory_metrics.h"
+#include "lrsvo/frontend/datasets/pose_file.h"
+#include "lrsvo/graph/error.h"
 #include "unit_tests/temp_folder.h"
 
 namespace lrsvo {

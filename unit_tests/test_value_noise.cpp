@@ -8,9 +8,9 @@
 #include <random>
 #include <vector>
 
-#include "sim/cpu_features.h"
-#include "sim/ground_texture.h"
-#include "sim/value_noise.h"
+#include "lrsvo/sim/cpu_features.h"
+#include "lrsvo/sim/ground_texture.h"
+#include "lrsvo/sim/value_noise.h"
 
 namespace lrsvo {
 namespace {

@@ -9,14 +9,14 @@
 
 #include <gtest/gtest.h>
 
-#include "constraints/constraint_method.h"
-#include "edges/edge_project_base.h"
-#include "edges/edge_project_secondary.h"
-#include "graph/block_system.h"
-#include "graph/optimizer.h"
-#include "graph/registry.h"
-#include "graph/schur_solver.h"
-#include "sim/window_problem.h"
+#include "lrsvo/constraints/constraint_method.h"
+#include "lrsvo/edges/edge_project_base.h"
+#include "lrsvo/edges/edge_project_secondary.h"
+#include "lrsvo/graph/block_system.h"
+#include "lrsvo/graph/optimizer.h"
+#include "lrsvo/graph/registry.h"
+#include "lrsvo/graph/schur_solver.h"
+#include "lrsvo/sim/window_problem.h"
 
 namespace lrsvo {
 namespace {

@@ -1,4 +1,4 @@
-#include "vertices/so3.h"
+#include "lrsvo/vertices/so3.h"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "graph/vertex.h"
+#include "lrsvo/graph/vertex.h"
 
 namespace lrsvo {
 

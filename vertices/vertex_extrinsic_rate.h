@@ -1,6 +1,6 @@
 #pragma once
 
-#include "vertices/vertex_stereo_extrinsic.h"
+#include "lrsvo/vertices/vertex_stereo_extrinsic.h"
 
 namespace lrsvo {
 

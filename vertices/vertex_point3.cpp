@@ -1,6 +1,4 @@
-#include "vertices/vertex_point3.h"
-
-#include "graph/registry.h"
+#include "lrsvo/vertices/vertex_point3.h"
 
 namespace lrsvo {
 
@@ -8,7 +6,5 @@ VertexPoint3::VertexPoint3(int id, const Eigen::Vector3d& position) : VectorVert
   estimate_ = position;
   setMarginalized(true);
 }
-
-LRSVO_REGISTER_TYPE(Vertex, VertexPoint3);
 
 }  // namespace lrsvo

@@ -1,10 +1,9 @@
-#include "vertices/vertex_pose.h"
+#include "lrsvo/vertices/vertex_pose.h"
 
 #include <cmath>
 
-#include "graph/error.h"
-#include "graph/registry.h"
-#include "vertices/so3.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/vertices/so3.h"
 
 namespace lrsvo {
 
@@ -52,7 +51,5 @@ void VertexPose::oplus(const double* delta) {
   quaternion_ = (Eigen::Quaterniond(dR) * quaternion_).normalized();
   rotation_ = quaternion_.toRotationMatrix();
 }
-
-LRSVO_REGISTER_TYPE(Vertex, VertexPose);
 
 }  // namespace lrsvo

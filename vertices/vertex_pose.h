@@ -2,7 +2,7 @@
 
 #include <Eigen/Geometry>
 
-#include "graph/vertex.h"
+#include "lrsvo/graph/vertex.h"
 
 namespace lrsvo {
 

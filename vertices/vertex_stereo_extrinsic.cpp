@@ -1,8 +1,6 @@
-#include "vertices/vertex_stereo_extrinsic.h"
+#include "lrsvo/vertices/vertex_stereo_extrinsic.h"
 
 #include <Eigen/Geometry>
-
-#include "graph/registry.h"
 
 namespace lrsvo {
 
@@ -36,7 +34,5 @@ Eigen::Isometry3d VertexStereoExtrinsic::secondaryFromBase() const {
   transform.translation() = -rotation_ * estimate_.head<3>();
   return transform;
 }
-
-LRSVO_REGISTER_TYPE(Vertex, VertexStereoExtrinsic);
 
 }  // namespace lrsvo

@@ -10,7 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo::bench {
 

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "graph/solver_summary.h"
+#include "lrsvo/graph/solver_summary.h"
 
 namespace CLI {
 class App;

@@ -11,7 +11,7 @@
 #include <ceres/solver.h>
 #include <ceres/version.h>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo::bench {
 

@@ -5,8 +5,8 @@
 #include <ceres/types.h>
 
 #include "apps/bench/bench_common.h"
-#include "edges/bal_problem.h"
-#include "graph/solver_options.h"
+#include "lrsvo/frontend/datasets/bal_problem.h"
+#include "lrsvo/graph/solver_options.h"
 
 namespace lrsvo::bench {
 

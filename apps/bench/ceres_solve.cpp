@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "graph/error.h"
+#include "lrsvo/graph/error.h"
 
 namespace lrsvo::bench {
 

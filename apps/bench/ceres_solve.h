@@ -5,7 +5,7 @@
 #include <ceres/types.h>
 
 #include "apps/bench/bench_common.h"
-#include "graph/solver_options.h"
+#include "lrsvo/graph/solver_options.h"
 
 namespace lrsvo::bench {
 

@@ -13,14 +13,14 @@
 #include <Eigen/Cholesky>
 
 #include "apps/bench/ceres_solve.h"
-#include "edges/edge_project_base.h"
-#include "edges/edge_project_secondary.h"
-#include "graph/error.h"
-#include "graph/robust_kernel.h"
-#include "vertices/vertex_point3.h"
-#include "vertices/vertex_pose.h"
-#include "vertices/vertex_scale.h"
-#include "vertices/vertex_stereo_extrinsic.h"
+#include "lrsvo/edges/edge_project_base.h"
+#include "lrsvo/edges/edge_project_secondary.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/robust_kernel.h"
+#include "lrsvo/vertices/vertex_point3.h"
+#include "lrsvo/vertices/vertex_pose.h"
+#include "lrsvo/vertices/vertex_scale.h"
+#include "lrsvo/vertices/vertex_stereo_extrinsic.h"
 
 namespace lrsvo::bench {
 

@@ -7,9 +7,9 @@
 #include <ceres/types.h>
 
 #include "apps/bench/bench_common.h"
-#include "constraints/bounds.h"
-#include "graph/graph.h"
-#include "graph/solver_options.h"
+#include "lrsvo/constraints/bounds.h"
+#include "lrsvo/graph/graph.h"
+#include "lrsvo/graph/solver_options.h"
 
 namespace lrsvo::bench {
 

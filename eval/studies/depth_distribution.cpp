@@ -7,13 +7,14 @@
 #include <map>
 #include <optional>
 
-#include "eval/depth_resolution.h"
-#include "eval/line_rig.h"
-#include "eval/paper_cameras.h"
-#include "eval/sample_statistics.h"
-#include "eval/studies/study_support.h"
-#include "eval/study.h"
-#include "eval/triangulation_trials.h"
+#include "lrsvo/eval/depth_resolution.h"
+#include "lrsvo/eval/line_rig.h"
+#include "lrsvo/eval/paper_cameras.h"
+#include "lrsvo/eval/sample_statistics.h"
+#include "lrsvo/eval/studies/paper_studies.h"
+#include "lrsvo/eval/studies/study_support.h"
+#include "lrsvo/eval/study.h"
+#include "lrsvo/eval/triangulation_trials.h"
 
 namespace lrsvo {
 namespace {
@@ -108,8 +109,9 @@ StudyReport runDepthDistribution(const StudyOptions& options) {
 
 }  // namespace
 
-LRSVO_REGISTER_STUDY(Study{"depth-distribution", "Fig. 7",
-                           "Distribution of the triangulated depth from 2 to 5 cameras in a line", kPaperTrials,
-                           runDepthDistribution});
+Study depthDistributionStudy() {
+  return Study{"depth-distribution", "Fig. 7", "Distribution of the triangulated depth from 2 to 5 cameras in a line",
+               kPaperTrials, runDepthDistribution};
+}
 
 }  // namespace lrsvo

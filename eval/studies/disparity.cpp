@@ -4,10 +4,11 @@
 
 #include <iterator>
 
-#include "eval/depth_resolution.h"
-#include "eval/paper_cameras.h"
-#include "eval/studies/study_support.h"
-#include "eval/study.h"
+#include "lrsvo/eval/depth_resolution.h"
+#include "lrsvo/eval/paper_cameras.h"
+#include "lrsvo/eval/studies/paper_studies.h"
+#include "lrsvo/eval/studies/study_support.h"
+#include "lrsvo/eval/study.h"
 
 namespace lrsvo {
 namespace {
@@ -70,7 +71,8 @@ StudyReport runDisparity(const StudyOptions& options) {
 
 }  // namespace
 
-LRSVO_REGISTER_STUDY(Study{"disparity", "Fig. 1", "Disparity and depth resolution of a perfect stereo pair", 0,
-                           runDisparity});
+Study disparityStudy() {
+  return Study{"disparity", "Fig. 1", "Disparity and depth resolution of a perfect stereo pair", 0, runDisparity};
+}
 
 }  // namespace lrsvo

@@ -4,10 +4,11 @@
 
 #include <cmath>
 
-#include "eval/paper_cameras.h"
-#include "eval/studies/section2_setup.h"
-#include "eval/studies/study_support.h"
-#include "eval/study.h"
+#include "lrsvo/eval/paper_cameras.h"
+#include "lrsvo/eval/studies/paper_studies.h"
+#include "lrsvo/eval/studies/section2_setup.h"
+#include "lrsvo/eval/studies/study_support.h"
+#include "lrsvo/eval/study.h"
 
 namespace lrsvo {
 namespace {
@@ -90,7 +91,8 @@ StudyReport runEpipolar(const StudyOptions& options) {
 
 }  // namespace
 
-LRSVO_REGISTER_STUDY(Study{"epipolar", "Fig. 4", "Epipolar error of a deformed, vertically aligned stereo pair", 0,
-                           runEpipolar});
+Study epipolarStudy() {
+  return Study{"epipolar", "Fig. 4", "Epipolar error of a deformed, vertically aligned stereo pair", 0, runEpipolar};
+}
 
 }  // namespace lrsvo

@@ -9,12 +9,13 @@
 #include <map>
 #include <vector>
 
-#include "eval/initialization_trial.h"
-#include "eval/sample_statistics.h"
-#include "eval/studies/study_support.h"
-#include "eval/study.h"
-#include "frontend/long_range_initializer.h"
-#include "frontend/rigid_stereo_initializer.h"
+#include "lrsvo/eval/initialization_trial.h"
+#include "lrsvo/eval/sample_statistics.h"
+#include "lrsvo/eval/studies/paper_studies.h"
+#include "lrsvo/eval/studies/study_support.h"
+#include "lrsvo/eval/study.h"
+#include "lrsvo/frontend/odometry/long_range_initializer.h"
+#include "lrsvo/frontend/odometry/rigid_stereo_initializer.h"
 
 namespace lrsvo {
 namespace {
@@ -233,9 +234,12 @@ StudyReport runInitAltitude(const StudyOptions& options) {
   return report;
 }
 
-LRSVO_REGISTER_STUDY(Study{"init-altitude", "Fig. 17",
-                           "Initialisation vs altitude: long-range (kappa) against rigid stereo, 10-150 m",
-                           kPaperTrials, runInitAltitude});
-
 }  // namespace
+
+Study initAltitudeStudy() {
+  return Study{"init-altitude", "Fig. 17",
+               "Initialisation vs altitude: long-range (kappa) against rigid stereo, 10-150 m", kPaperTrials,
+               runInitAltitude};
+}
+
 }  // namespace lrsvo

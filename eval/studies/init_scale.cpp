@@ -10,11 +10,12 @@
 #include <map>
 #include <vector>
 
-#include "eval/initialization_trial.h"
-#include "eval/sample_statistics.h"
-#include "eval/studies/study_support.h"
-#include "eval/study.h"
-#include "frontend/long_range_initializer.h"
+#include "lrsvo/eval/initialization_trial.h"
+#include "lrsvo/eval/sample_statistics.h"
+#include "lrsvo/eval/studies/paper_studies.h"
+#include "lrsvo/eval/studies/study_support.h"
+#include "lrsvo/eval/study.h"
+#include "lrsvo/frontend/odometry/long_range_initializer.h"
 
 namespace lrsvo {
 namespace {
@@ -168,9 +169,12 @@ StudyReport runInitScale(const StudyOptions& options) {
   return report;
 }
 
-LRSVO_REGISTER_STUDY(Study{"init-scale", "Fig. 18",
-                           "Initialisation vs start scale at 70 m: the batch adjustment with and without kappa",
-                           kPaperTrials, runInitScale});
-
 }  // namespace
+
+Study initScaleStudy() {
+  return Study{"init-scale", "Fig. 18",
+               "Initialisation vs start scale at 70 m: the batch adjustment with and without kappa", kPaperTrials,
+               runInitScale};
+}
+
 }  // namespace lrsvo

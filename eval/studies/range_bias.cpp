@@ -6,13 +6,14 @@
 #include <iterator>
 #include <map>
 
-#include "eval/depth_resolution.h"
-#include "eval/line_rig.h"
-#include "eval/paper_cameras.h"
-#include "eval/sample_statistics.h"
-#include "eval/studies/study_support.h"
-#include "eval/study.h"
-#include "eval/triangulation_trials.h"
+#include "lrsvo/eval/depth_resolution.h"
+#include "lrsvo/eval/line_rig.h"
+#include "lrsvo/eval/paper_cameras.h"
+#include "lrsvo/eval/sample_statistics.h"
+#include "lrsvo/eval/studies/paper_studies.h"
+#include "lrsvo/eval/studies/study_support.h"
+#include "lrsvo/eval/study.h"
+#include "lrsvo/eval/triangulation_trials.h"
 
 namespace lrsvo {
 namespace {
@@ -121,7 +122,9 @@ StudyReport runRangeBias(const StudyOptions& options) {
 
 }  // namespace
 
-LRSVO_REGISTER_STUDY(Study{"range-bias", "Fig. 6", "Range bias of triangulation from 2, 3 and 4 cameras in a line",
-                           kPaperTrials, runRangeBias});
+Study rangeBiasStudy() {
+  return Study{"range-bias", "Fig. 6", "Range bias of triangulation from 2, 3 and 4 cameras in a line", kPaperTrials,
+               runRangeBias};
+}
 
 }  // namespace lrsvo

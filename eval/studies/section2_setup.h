@@ -4,8 +4,8 @@
 // aligned pair 0.7 m apart, a point 100 m along the base camera's optical
 // axis, the second camera translated up to 0.1 m or rotated up to 0.5 deg.
 
-#include "eval/deformed_pair.h"
-#include "eval/paper_cameras.h"
+#include "lrsvo/eval/deformed_pair.h"
+#include "lrsvo/eval/paper_cameras.h"
 
 namespace lrsvo::section2 {
 

@@ -4,10 +4,11 @@
 
 #include <cmath>
 
-#include "eval/paper_cameras.h"
-#include "eval/studies/section2_setup.h"
-#include "eval/studies/study_support.h"
-#include "eval/study.h"
+#include "lrsvo/eval/paper_cameras.h"
+#include "lrsvo/eval/studies/paper_studies.h"
+#include "lrsvo/eval/studies/section2_setup.h"
+#include "lrsvo/eval/studies/study_support.h"
+#include "lrsvo/eval/study.h"
 
 namespace lrsvo {
 namespace {
@@ -84,7 +85,9 @@ StudyReport runTriangulation(const StudyOptions& options) {
 
 }  // namespace
 
-LRSVO_REGISTER_STUDY(Study{"triangulation", "Fig. 5",
-                           "Triangulation error of a deformed, vertically aligned stereo pair", 0, runTriangulation});
+Study triangulationStudy() {
+  return Study{"triangulation", "Fig. 5", "Triangulation error of a deformed, vertically aligned stereo pair", 0,
+               runTriangulation};
+}
 
 }  // namespace lrsvo

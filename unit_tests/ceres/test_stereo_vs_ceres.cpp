@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "apps/bench/ceres_stereo.h"
-#include "constraints/constraint_method.h"
-#include "edges/gtsam_stereo_vo.h"
-#include "graph/optimizer.h"
-#include "sim/window_problem.h"
+#include "lrsvo/constraints/constraint_method.h"
+#include "lrsvo/frontend/datasets/gtsam_stereo_vo.h"
+#include "lrsvo/graph/optimizer.h"
+#include "lrsvo/sim/window_problem.h"
 
 namespace lrsvo {
 namespace {

@@ -6,11 +6,11 @@
 
 #include <Eigen/Core>
 
-#include "graph/base_edge.h"
-#include "graph/error.h"
-#include "graph/graph.h"
-#include "graph/optimizer.h"
-#include "vertices/vertex_point3.h"
+#include "lrsvo/graph/base_edge.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/graph.h"
+#include "lrsvo/graph/optimizer.h"
+#include "lrsvo/vertices/vertex_point3.h"
 
 namespace {
 

@@ -9,14 +9,16 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "edges/bal_problem.h"
-#include "edges/gtsam_stereo_vo.h"
-#include "frontend/euroc_reader.h"
-#include "frontend/kitti_reader.h"
-#include "frontend/pose_file.h"
-#include "graph/error.h"
-#include "graph/graph_file.h"
-#include "sim/scenario.h"
+#include "lrsvo/constraints/constraint_types.h"
+#include "lrsvo/edges/edge_types.h"
+#include "lrsvo/frontend/datasets/bal_problem.h"
+#include "lrsvo/frontend/datasets/euroc_reader.h"
+#include "lrsvo/frontend/datasets/gtsam_stereo_vo.h"
+#include "lrsvo/frontend/datasets/kitti_reader.h"
+#include "lrsvo/frontend/datasets/pose_file.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/graph_file.h"
+#include "lrsvo/sim/scenario.h"
 
 namespace lrsvo::fuzz {
 namespace {
@@ -110,6 +112,8 @@ void bal(const std::uint8_t* data, std::size_t size) {
 }
 
 void graphFile(const std::uint8_t* data, std::size_t size) {
+  registerEdgeTypes();
+  registerConstraintTypes();
   std::istringstream in{std::string(whole(data, size))};
   rejectingBadInput([&] { (void)loadGraph(in, "fuzz input"); });
 }

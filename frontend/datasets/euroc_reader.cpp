@@ -1,0 +1,158 @@
+#include "lrsvo/frontend/datasets/euroc_reader.h"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "lrsvo/frontend/datasets/pose_file.h"
+#include "lrsvo/frontend/odometry/rig_extrinsic.h"
+#include "lrsvo/graph/error.h"
+
+namespace lrsvo {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error("EuRoC: cannot open " + path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The numbers of the bracketed list after `key:` (searched from `from`),
+// which may span lines and carry '#' comments after it.
+std::vector<double> listAfter(const std::string& text, const std::string& key, const std::string& path,
+                              std::size_t from) {
+  std::size_t at = from;
+  while (true) {
+    at = text.find(key + ":", at);
+    if (at == std::string::npos) throw Error("EuRoC: " + path + " has no key '" + key + "'");
+    const bool startsWord = at == 0 || text[at - 1] == '\n' || text[at - 1] == ' ';
+    if (startsWord) break;
+    ++at;
+  }
+  const std::size_t open = text.find('[', at), close = text.find(']', at);
+  const std::size_t lineEnd = text.find('\n', at);
+  if (open == std::string::npos || close == std::string::npos || close < open || open > lineEnd)
+    throw Error("EuRoC: " + path + ": key '" + key + "' is not followed by a [list]");
+  std::string list = text.substr(open + 1, close - open - 1);
+  for (char& c : list)
+    if (c == ',') c = ' ';
+  std::istringstream in(list);
+  std::vector<double> numbers;
+  double value;
+  while (in >> value) numbers.push_back(value);
+  if (!in.eof()) throw Error("EuRoC: " + path + ": key '" + key + "' holds something other than numbers");
+  return numbers;
+}
+
+std::vector<double> numberList(const std::string& text, const std::string& key, const std::string& path,
+                               std::size_t count, std::size_t from = 0) {
+  std::vector<double> numbers = listAfter(text, key, path, from);
+  if (numbers.size() != count)
+    throw Error("EuRoC: " + path + ": key '" + key + "' should hold " + std::to_string(count) + " numbers, has " +
+                std::to_string(numbers.size()));
+  return numbers;
+}
+
+// data.csv: "#timestamp [ns],filename" rows, by timestamp.
+std::map<long long, std::string> readImageList(const std::string& cameraDirectory) {
+  const std::string path = cameraDirectory + "/data.csv";
+  std::ifstream in(path);
+  if (!in) throw Error("EuRoC: cannot open " + path);
+  std::map<long long, std::string> images;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (line.empty() || line[0] == '#') continue;
+    if (line.back() == '\r') line.pop_back();
+    const std::size_t comma = line.find(',');
+    if (comma == std::string::npos) throw ParseError(path, number, "expected 'timestamp_ns,filename'");
+    try {
+      images[std::stoll(line.substr(0, comma))] = cameraDirectory + "/data/" + line.substr(comma + 1);
+    } catch (const std::logic_error&) {
+      throw ParseError(path, number, "the timestamp is not an integer number of nanoseconds");
+    }
+  }
+  if (images.empty()) throw Error("EuRoC: " + path + " lists no image");
+  return images;
+}
+
+}  // namespace
+
+EurocCameraCalibration readEurocSensor(const std::string& path) {
+  const std::string text = readText(path);
+  const std::vector<double> k = numberList(text, "intrinsics", path, 4);
+  const std::vector<double> d = numberList(text, "distortion_coefficients", path, 4);
+  const std::vector<double> resolution = numberList(text, "resolution", path, 2);
+  const std::size_t tbs = text.find("T_BS:");
+  if (tbs == std::string::npos) throw Error("EuRoC: " + path + " has no key 'T_BS'");
+  const std::vector<double> t = numberList(text, "data", path, 16, tbs);
+  EurocCameraCalibration calibration;
+  calibration.camera.intrinsics = {k[0], k[1], k[2], k[3]};
+  calibration.camera.width = static_cast<int>(resolution[0]);
+  calibration.camera.height = static_cast<int>(resolution[1]);
+  calibration.distortion.coefficients = {d[0], d[1], d[2], d[3], 0.0};
+  Eigen::Matrix4d m;
+  for (int i = 0; i < 16; ++i) m(i / 4, i % 4) = t[static_cast<std::size_t>(i)];
+  calibration.bodyFromSensor.matrix() = m;
+  return calibration;
+}
+
+EurocSource::EurocSource(const std::string& directory) : directory_(directory) {
+  const std::string mav = directory + "/mav0";
+  if (!fs::is_directory(mav)) throw Error("EuRoC: no directory " + mav);
+  std::array<EurocCameraCalibration, 2> calibration;
+  std::array<std::map<long long, std::string>, 2> images;
+  for (int c = 0; c < 2; ++c) {
+    const std::string camera = mav + "/cam" + std::to_string(c);
+    calibration[static_cast<std::size_t>(c)] = readEurocSensor(camera + "/sensor.yaml");
+    images[static_cast<std::size_t>(c)] = readImageList(camera);
+  }
+  rig_.cameras = {calibration[0].camera, calibration[1].camera};
+  rig_.extrinsics = {extrinsicFromPoses(calibration[0].bodyFromSensor, calibration[1].bodyFromSensor)};
+  rig_.validate();
+  distortion_ = {calibration[0].distortion, calibration[1].distortion};
+  for (const auto& [stamp, file] : images[0]) {
+    const auto partner = images[1].find(stamp);
+    if (partner != images[1].end()) frames_.push_back({stamp * 1e-9, {file, partner->second}});
+  }
+  if (frames_.empty()) throw Error("EuRoC: no cam0 and cam1 images share a timestamp in " + mav);
+
+  const std::string cameraTruth = directory + "/groundtruth_cam0_tum.txt";
+  const std::string bodyTruth = directory + "/groundtruth_body_tum.txt";
+  auto readTruth = [&](const std::string& file, const Eigen::Isometry3d& bodyFromCamera) {
+    const Trajectory trajectory = readTumTrajectory(file);
+    for (std::size_t i = 0; i < trajectory.size(); ++i)
+      truth_.poses.push_back({trajectory.times_s[i], trajectory.worldFromCamera[i] * bodyFromCamera});
+  };
+  if (fs::exists(cameraTruth))
+    readTruth(cameraTruth, Eigen::Isometry3d::Identity());
+  else if (fs::exists(bodyTruth))
+    readTruth(bodyTruth, calibration[0].bodyFromSensor);
+}
+
+std::optional<StereoFrame> EurocSource::next() {
+  if (next_ >= frames_.size()) return std::nullopt;
+  const FramePaths& paths = frames_[next_];
+  StereoFrame frame;
+  frame.index = static_cast<int>(next_++);
+  frame.time_s = paths.time_s;
+  for (std::size_t c = 0; c < 2; ++c) {
+    cv::Mat image = cv::imread(paths.images[c], cv::IMREAD_GRAYSCALE);
+    const Camera& camera = rig_.cameras[c];
+    if (image.empty() && frame.defect.empty()) frame.defect = "cannot read image " + paths.images[c];
+    if (!image.empty() && (image.cols != camera.width || image.rows != camera.height) && frame.defect.empty())
+      frame.defect = "image " + paths.images[c] + " is " + std::to_string(image.cols) + "x" +
+                     std::to_string(image.rows) + ", sensor.yaml says " + std::to_string(camera.width) + "x" +
+                     std::to_string(camera.height);
+    frame.images.push_back(std::move(image));
+  }
+  return frame;
+}
+
+}  // namespace lrsvo

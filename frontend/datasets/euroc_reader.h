@@ -1,0 +1,59 @@
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "lrsvo/frontend/datasets/frame_source.h"
+
+namespace lrsvo {
+
+// One camera's calibration as EuRoC's cam<i>/sensor.yaml gives it.
+struct EurocCameraCalibration {
+  Camera camera;                                                     // intrinsics [fu fv cu cv], resolution
+  LensDistortion distortion;                                         // radial-tangential [k1 k2 p1 p2]
+  Eigen::Isometry3d bodyFromSensor = Eigen::Isometry3d::Identity();  // T_BS
+};
+
+// Reads cam<i>/sensor.yaml. EuRoC's files are YAML with a "%YAML:1.0" header
+// and nested T_BS maps; only the few keys needed are read, by hand, so that a
+// file with or without the header reads alike. Throws lrsvo::Error naming the
+// file and the missing or malformed key.
+EurocCameraCalibration readEurocSensor(const std::string& path);
+
+// A stereo sequence in the EuRoC MAV layout: DIR/mav0/cam0/data.csv,
+// cam0/data/<ns>.png, cam0/sensor.yaml, and cam1 likewise. Camera 0 is the
+// base; cam1's extrinsic comes from the two T_BS. Frames pair cam0 and cam1
+// images of equal timestamp (cam0 images without a partner are skipped).
+// Ground truth, when present: DIR/groundtruth_cam0_tum.txt (poses of cam0),
+// else DIR/groundtruth_body_tum.txt (poses of the body, moved to cam0 by T_BS).
+// An image that cannot be read, or is not the size sensor.yaml gives, is
+// reported in its frame's defect; the sequence goes on.
+class EurocSource : public FrameSource {
+ public:
+  explicit EurocSource(const std::string& directory);
+  std::string name() const override { return "euroc:" + directory_; }
+  const Rig& rig() const override { return rig_; }
+  const std::vector<LensDistortion>& distortion() const override { return distortion_; }
+  int frameCount() const override { return static_cast<int>(frames_.size()); }
+  std::optional<StereoFrame> next() override;
+  void skip(int count) override {
+    next_ = std::min(frames_.size(), next_ + static_cast<std::size_t>(std::max(count, 0)));
+  }
+  GroundTruth groundTruth() const override { return truth_; }
+
+ private:
+  struct FramePaths {
+    double time_s = 0.0;
+    std::array<std::string, 2> images;
+  };
+  std::string directory_;
+  Rig rig_;
+  std::vector<LensDistortion> distortion_;
+  std::vector<FramePaths> frames_;
+  std::size_t next_ = 0;
+  GroundTruth truth_;
+};
+
+}  // namespace lrsvo

@@ -1,0 +1,148 @@
+#include "lrsvo/frontend/odometry/long_range_initializer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/marginal_covariance.h"
+#include "lrsvo/graph/registry.h"
+
+namespace lrsvo {
+namespace {
+
+std::string format(const char* pattern, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
+
+void validate(const LongRangeInitializerOptions& o) {
+  if (o.frames < 3) throw Error("long-range initialiser: needs at least 3 frames, got " + std::to_string(o.frames));
+  if (!(o.initialBaseline > 0.0) || !(o.initialKappa > 0.0))
+    throw Error("long-range initialiser: initialBaseline and initialKappa must be positive");
+  if (!Registry<ConstraintMethod>::instance().contains(o.constraintMethod))
+    throw Error("long-range initialiser: unknown constraint method '" + o.constraintMethod + "'");
+  SolverOptions::fromName(o.solver);  // throws on an unknown name
+}
+
+// The relative standard deviation of the metric scale, as that of the metric
+// distance between the first and last cameras, kappa L: along the gauge the
+// map's unit and kappa trade off exactly, so kappa alone would carry the
+// distance prior's own spread, which the product cancels. Conditioned on the
+// extrinsic centres and on angles at a bound (see the class comment).
+double scaleRelativeStd(BundleGraph& bundle, const Bounds& bounds, int lastPose) {
+  const std::vector<HeldCoordinate> held = bundle.scaleGaugeCoordinates(&bounds);
+  const VertexPose& last = *bundle.pose(lastPose);
+  const Eigen::MatrixXd covariance = marginalCovariance(bundle.graph(), {bundle.scale(), &last}, held);
+  // d(kappa L) / (kappa L) = dkappa / kappa + dL / L; pose 0 is fixed and the
+  // last centre moves by -R^T dt under VertexPose's update.
+  const Eigen::Vector3d span = last.centre() - bundle.pose(0)->centre();
+  Eigen::Matrix<double, 1, 7> jacobian = Eigen::Matrix<double, 1, 7>::Zero();
+  jacobian[0] = 1.0 / bundle.scale()->kappa();
+  jacobian.segment<3>(1) = -span.transpose() * last.rotation().transpose() / span.squaredNorm();
+  return std::sqrt((jacobian * covariance * jacobian.transpose())(0, 0));
+}
+
+}  // namespace
+
+LongRangeInitializer::LongRangeInitializer(LongRangeInitializerOptions options) : options_(std::move(options)) {
+  validate(options_);
+}
+
+InitializationResult LongRangeInitializer::initialize(const Rig& rig,
+                                                      const std::vector<FrameObservations>& frames) const {
+  rig.validate();
+  if (rig.secondaryCount() < 1) throw Error("long-range initialiser: the rig needs a secondary camera");
+  const LongRangeInitializerOptions& o = options_;
+  MonocularOptions monocularOptions = o.monocular;
+  monocularOptions.frames = o.frames;
+  monocularOptions.initialBaseline = o.initialBaseline;
+  monocularOptions.solver = o.solver;
+  monocularOptions.bundle = o.bundle;
+  monocularOptions.seed = o.seed;
+  const std::vector<MonocularResult> maps = buildMonocularMaps(rig, frames, monocularOptions);
+
+  // The secondary camera judges the pair's motion hypotheses: its calibrated
+  // offset along the baseline fits the true motion only, so the planar twin
+  // leaves a large reprojection error even with S at its bounds.
+  std::optional<InitializationResult> best;
+  for (const MonocularResult& monocular : maps) {
+    if (!monocular.success) continue;
+    InitializationResult candidate = addSecondaryCameras(rig, frames, monocular.map);
+    if (!best || candidate.rmsReprojectionError_px < best->rmsReprojectionError_px) best = std::move(candidate);
+  }
+  if (best) return std::move(*best);
+  InitializationResult result;
+  result.failure = "long-range: " + maps.front().failure;
+  return result;
+}
+
+InitializationResult LongRangeInitializer::addSecondaryCameras(const Rig& rig,
+                                                               const std::vector<FrameObservations>& frames,
+                                                               const SparseMap& monocularMap) const {
+  const LongRangeInitializerOptions& o = options_;
+  InitializationResult result;
+  BundleGraph bundle(rig, monocularMap, 1, o.bundle);
+  for (int k = 1; k <= rig.secondaryCount(); ++k) bundle.addExtrinsic(k, rig.extrinsics[k - 1], false);
+  if (o.estimateScale) {
+    bundle.addScale(o.initialKappa);
+    bundle.holdDistance(0, 1);
+  }
+  for (int i = 0; i < o.frames; ++i) bundle.addObservations(i, frames[i]);
+  const Bounds bounds = bundle.extrinsicBounds();
+  SolverOptions solver = SolverOptions::fromName(o.solver);
+  solver.maxIterations = o.maxIterations;
+  result.summary = optimizeWithBounds(bundle.graph(), solver, bounds, o.constraintMethod, o.constraintSettings);
+  result.rmsReprojectionError_px = bundle.rmsReprojectionError_px();
+  result.extrinsics = bundle.extrinsics();
+
+  std::string failure;
+  if (!result.summary.converged())
+    failure =
+        std::string("the batch adjustment did not converge (") + terminationName(result.summary.termination) + ")";
+  else if (!(result.rmsReprojectionError_px <= o.maxRmsReprojectionError_px))
+    failure = "RMS reprojection error " + format("%.3g", result.rmsReprojectionError_px) + " px exceeds " +
+              format("%.3g", o.maxRmsReprojectionError_px) + " px";
+
+  // kappa and the extrinsic centres share an exact gauge: (c, kappa) -> (b c, b kappa) changes no projection
+  // (nor, without kappa, (c, map) -> (b c, b map)). Only c's bounds pin it, to +-q / |c| (0.14 % for 1 mm on
+  // 0.7 m); without bounds it is free. So the metric unit comes from the calibrated baseline length: the map is
+  // multiplied by kappa |c_cal| / |c| and each c by |c_cal| / |c|, which keeps every projection.
+  const double kappa = o.estimateScale ? bundle.scale()->kappa() : 1.0;
+  double calibratedLength = 0.0, estimatedLength = 0.0;
+  for (int k = 0; k < rig.secondaryCount(); ++k) {
+    calibratedLength += rig.extrinsics[k].head<3>().norm();
+    estimatedLength += result.extrinsics[k].head<3>().norm();
+  }
+  const double toCalibratedLength = calibratedLength / estimatedLength;
+  result.kappa = kappa * toCalibratedLength;
+  if (!(std::isfinite(result.kappa) && result.kappa > 0.0)) {
+    result.failure = "long-range: the map's scale " + format("%g", result.kappa) + " is not positive and finite";
+    return result;
+  }
+  if (o.estimateScale) {
+    try {
+      result.kappaRelativeStd = scaleRelativeStd(bundle, bounds, o.frames - 1);
+    } catch (const Error&) {
+      result.kappaRelativeStd = std::numeric_limits<double>::infinity();
+    }
+    if (failure.empty() && !(result.kappaRelativeStd <= o.maxKappaRelativeStd))
+      failure = "kappa is poorly conditioned: relative standard deviation " + format("%.3g", result.kappaRelativeStd) +
+                " exceeds " + format("%.3g", o.maxKappaRelativeStd);
+  }
+  for (auto& extrinsic : result.extrinsics) extrinsic.head<3>() *= toCalibratedLength;
+  SparseMap map = bundle.map();
+  map.scale(result.kappa);
+  result.cameraFromWorld = std::move(map.cameraFromWorld);
+  result.points = std::move(map.points);
+  result.success = failure.empty();
+  if (!result.success) result.failure = "long-range: " + failure;
+  return result;
+}
+
+}  // namespace lrsvo

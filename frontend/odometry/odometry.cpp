@@ -1,0 +1,291 @@
+#include "lrsvo/frontend/odometry/odometry.h"
+
+#include <chrono>
+#include <cstdio>
+#include <utility>
+
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/registry.h"
+
+namespace lrsvo {
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+int baseObservationCount(const FrameObservations& frame) {
+  int count = 0;
+  for (const Observation& observation : frame.observations) count += observation.camera == 0;
+  return count;
+}
+
+FrameObservations withSecondary(const FrameObservations& frame, const SecondaryObservations& secondary) {
+  if (!secondary) return frame;
+  FrameObservations whole = frame;
+  const std::vector<Observation> more = secondary();
+  whole.observations.insert(whole.observations.end(), more.begin(), more.end());
+  return whole;
+}
+
+}  // namespace
+
+Odometry::Odometry(Rig rig, OdometryOptions options)
+    : rig_(std::move(rig)), options_(std::move(options)), keyframePolicy_(options_.keyframes), window_(rig_, options_) {
+  rig_.validate();
+  if (rig_.secondaryCount() < 1) throw Error("odometry: the rig needs a secondary camera");
+  options_.validate();
+  LongRangeInitializer{options_.initializer};  // validates its options now rather than at the first frame
+}
+
+std::vector<FrameEstimate> Odometry::process(const FrameObservations& frame, const SecondaryObservations& secondary) {
+  return settled(estimate(frame, secondary));
+}
+
+std::vector<FrameEstimate> Odometry::settled(std::vector<FrameEstimate> estimates) {
+  for (FrameEstimate& e : estimates) {
+    if (e.tracked) {
+      motion_.add(e.time_s, e.cameraFromWorld.inverse());
+    } else if (motion_.known() && e.time_s >= motion_.lastTime() &&
+               e.time_s - motion_.lastTime() <= options_.maxPrediction_s) {
+      e.predicted = true;
+      e.cameraFromWorld = motion_.predict(e.time_s).inverse();
+    }
+  }
+  return estimates;
+}
+
+std::vector<FrameEstimate> Odometry::estimate(const FrameObservations& frame, const SecondaryObservations& secondary) {
+  const int index = nextFrame_++;
+  if (tracking_) {
+    FrameEstimate estimate = track(frame, index, secondary);
+    if (estimate.tracked) return {estimate};
+    // Lost: this frame starts the next initialisation.
+  } else if (canRelocalise(frame.time_s)) {
+    FrameEstimate estimate = track(frame, index, secondary);
+    if (estimate.tracked) return relocalised(std::move(estimate));
+  }
+  // The initialiser's samples: the first buffered frame, then each frame at
+  // least initializationInterval_s after the last sample (a failed attempt
+  // gives up the frames before its second sample, which then leads).
+  if (pending_.empty()) {
+    FrameObservations whole = withSecondary(frame, secondary);
+    const StereoStart start = lrsvo::startFromStereo(rig_, whole, options_.stereoStart);
+    if (start.usable) return {startFromStereo(whole, index, start)};
+    samples_.push_back(0);
+    pending_.push_back(std::move(whole));
+  } else if (frame.time_s - pending_[samples_.back()].time_s >= options_.initializationInterval_s - kFrameTimeSlack_s) {
+    samples_.push_back(pending_.size());
+    pending_.push_back(withSecondary(frame, secondary));
+  } else {
+    pending_.push_back(frame);
+  }
+  pendingIndices_.push_back(index);
+  if (static_cast<int>(samples_.size()) < options_.initializer.frames) return {};
+  return initialize();
+}
+
+std::vector<FrameEstimate> Odometry::finish() { return settled(givePendingUp()); }
+
+std::vector<FrameEstimate> Odometry::givePendingUp() {
+  std::vector<FrameEstimate> estimates;
+  for (std::size_t i = 0; i < pending_.size(); ++i) estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
+  pending_.clear();
+  pendingIndices_.clear();
+  samples_.clear();
+  return estimates;
+}
+
+bool Odometry::canRelocalise(double time_s) const {
+  return !window_.points().empty() && motion_.known() && time_s - motion_.lastTime() <= options_.relocaliseWithin_s;
+}
+
+std::vector<FrameEstimate> Odometry::relocalised(FrameEstimate estimate) {
+  std::vector<FrameEstimate> estimates = givePendingUp();
+  tracking_ = true;
+  estimate.relocalised = true;
+  char note[96];
+  std::snprintf(note, sizeof note, "relocalised against the map %.2f s after the last measured pose",
+                estimate.time_s - motion_.lastTime());
+  estimate.note = note;
+  estimates.push_back(std::move(estimate));
+  return estimates;
+}
+
+Eigen::Isometry3d Odometry::segmentPlacement(double time_s) const {
+  return motion_.known() ? motion_.predict(time_s) : Eigen::Isometry3d::Identity();
+}
+
+std::vector<int> Odometry::takeRejectedTracks() { return std::exchange(rejectedTracks_, {}); }
+
+FrameEstimate Odometry::untracked(const FrameObservations& frame, int index) const {
+  FrameEstimate estimate;
+  estimate.frame = index;
+  estimate.time_s = frame.time_s;
+  estimate.observations = baseObservationCount(frame);
+  return estimate;
+}
+
+std::vector<FrameEstimate> Odometry::initialize() {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<FrameObservations> sampled;
+  for (std::size_t position : samples_) sampled.push_back(pending_[position]);
+  LongRangeInitializerOptions initializerOptions = options_.initializer;
+  initializerOptions.seed = options_.seed + static_cast<std::uint64_t>(pendingIndices_.front());
+  const InitializationResult result = LongRangeInitializer(initializerOptions).initialize(rig_, sampled);
+
+  std::vector<FrameEstimate> estimates;
+  if (!result.success) {
+    // Give up the frames before the second sample and try again from it.
+    const std::size_t givenUp = samples_[1];
+    for (std::size_t i = 0; i < givenUp; ++i) {
+      estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
+      estimates.back().note = "initialisation failed: " + result.failure;
+    }
+    pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(givenUp));
+    pendingIndices_.erase(pendingIndices_.begin(), pendingIndices_.begin() + static_cast<std::ptrdiff_t>(givenUp));
+    samples_.erase(samples_.begin());
+    for (std::size_t& position : samples_) position -= givenUp;
+    estimates.front().times.initialize_ms = millisecondsSince(start);
+    return estimates;
+  }
+
+  // The new segment's world is its first camera; place it where the last
+  // segment's motion, carried on, puts that camera.
+  const Eigen::Isometry3d worldFromSegment = segmentPlacement(pending_.front().time_s);
+  const Eigen::Isometry3d segmentFromWorld = worldFromSegment.inverse();
+  std::map<int, Eigen::Vector3d> points;
+  for (const auto& [track, point] : result.points) points.emplace(track, worldFromSegment * point);
+  std::vector<Keyframe> keyframes;
+  for (std::size_t i = 0; i < sampled.size(); ++i)
+    keyframes.push_back({pendingIndices_[samples_[i]], result.cameraFromWorld[i] * segmentFromWorld, sampled[i]});
+  window_.reset(keyframes, std::move(points), result.extrinsics, result.kappaRelativeStd);
+  ++segment_;
+  tracking_ = true;
+  const double initialize_ms = millisecondsSince(start);
+
+  for (std::size_t i = 0, sample = 0; i < pending_.size(); ++i) {
+    FrameEstimate estimate;
+    if (sample < samples_.size() && samples_[sample] == i) {
+      estimate = untracked(pending_[i], pendingIndices_[i]);
+      estimate.tracked = true;
+      estimate.keyframe = true;
+      estimate.segment = segment_;
+      estimate.cameraFromWorld = keyframes[sample++].cameraFromWorld;
+      estimate.extrinsics = window_.extrinsicsAt(pending_[i].time_s);
+      estimate.windowRmsError_px = result.rmsReprojectionError_px;
+      estimate.bundleIterations = result.summary.iterationCount();
+    } else {
+      estimate = untracked(pending_[i], pendingIndices_[i]);
+      Eigen::Isometry3d pose;
+      if (estimateFramePose(pending_[i], pendingIndices_[i], pose, estimate)) {
+        estimate.tracked = true;
+        estimate.segment = segment_;
+        estimate.cameraFromWorld = pose;
+        estimate.extrinsics = window_.extrinsicsAt(pending_[i].time_s);
+      }
+    }
+    estimate.mapPoints = static_cast<int>(window_.points().size());
+    estimate.windowFrames = static_cast<int>(window_.keyframes().size());
+    estimates.push_back(estimate);
+  }
+  estimates.back().times.initialize_ms = initialize_ms;
+  pending_.clear();
+  pendingIndices_.clear();
+  samples_.clear();
+  return estimates;
+}
+
+FrameEstimate Odometry::startFromStereo(const FrameObservations& frame, int index, const StereoStart& start) {
+  const auto begin = std::chrono::steady_clock::now();
+  // The new segment's world is this camera; place it where the last segment's motion, carried on, puts it.
+  const Eigen::Isometry3d worldFromSegment = segmentPlacement(frame.time_s);
+  std::map<int, Eigen::Vector3d> points;
+  for (const auto& [track, point] : start.points) points.emplace(track, worldFromSegment * point);
+  const Eigen::Isometry3d cameraFromWorld = worldFromSegment.inverse();
+  window_.reset({{index, cameraFromWorld, frame}}, std::move(points), rig_.extrinsics, start.scaleRelativeStd);
+  ++segment_;
+  tracking_ = true;
+
+  FrameEstimate estimate = untracked(frame, index);
+  estimate.tracked = true;
+  estimate.keyframe = true;
+  estimate.segment = segment_;
+  estimate.cameraFromWorld = cameraFromWorld;
+  estimate.extrinsics = window_.extrinsicsAt(frame.time_s);
+  estimate.mapPoints = static_cast<int>(window_.points().size());
+  estimate.windowFrames = 1;
+  estimate.times.initialize_ms = millisecondsSince(begin);
+  return estimate;
+}
+
+bool Odometry::estimateFramePose(const FrameObservations& frame, int index, Eigen::Isometry3d& cameraFromWorld,
+                                 FrameEstimate& estimate) {
+  std::vector<PoseMatch> matches;
+  std::vector<int> tracks;
+  const auto& points = window_.points();
+  for (const Observation& observation : frame.observations) {
+    if (observation.camera != 0) continue;
+    auto point = points.find(observation.track);
+    if (point == points.end()) continue;
+    matches.push_back({point->second, observation.pixel});
+    tracks.push_back(observation.track);
+  }
+  estimate.mappedMatches = static_cast<int>(matches.size());
+  PoseEstimatorOptions poseOptions = options_.pose;
+  poseOptions.seed = options_.seed ^ (0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(index + 1));
+  const PoseEstimate pose = estimatePose(matches, rig_.cameras[0], poseOptions);
+  estimate.poseInliers = pose.inlierCount;
+  if (!pose.success || pose.inlierCount < options_.minPoseInliers) return false;
+  cameraFromWorld = pose.cameraFromWorld;
+  // Matches far off the refined pose are wrong tracks: stop using them.
+  std::vector<int> rejected;
+  const PinholeIntrinsics& intrinsics = rig_.cameras[0].intrinsics;
+  for (std::size_t i = 0; i < matches.size(); ++i) {
+    const Eigen::Vector3d inCamera = cameraFromWorld * matches[i].point;
+    const bool outlier = inCamera.z() <= 0.0 ||
+                         (intrinsics.project(inCamera) - matches[i].pixel).norm() > options_.outliers.maxThreshold_px;
+    if (outlier) rejected.push_back(tracks[i]);
+  }
+  window_.removeTracks(rejected);
+  rejectedTracks_.insert(rejectedTracks_.end(), rejected.begin(), rejected.end());
+  return true;
+}
+
+FrameEstimate Odometry::track(const FrameObservations& frame, int index, const SecondaryObservations& secondary) {
+  FrameEstimate estimate = untracked(frame, index);
+  auto start = std::chrono::steady_clock::now();
+  Eigen::Isometry3d pose;
+  const bool posed = estimateFramePose(frame, index, pose, estimate);
+  estimate.times.pose_ms = millisecondsSince(start);
+  if (!posed) {
+    tracking_ = false;
+    return estimate;
+  }
+  estimate.tracked = true;
+  estimate.segment = segment_;
+  const Keyframe& last = window_.keyframes().back();
+  if (keyframePolicy_.isKeyframe(last.observations, frame)) {
+    estimate.keyframe = true;
+    window_.addKeyframe({index, pose, withSecondary(frame, secondary)});
+    start = std::chrono::steady_clock::now();
+    window_.triangulateNewTracks();
+    estimate.times.triangulate_ms = millisecondsSince(start);
+    start = std::chrono::steady_clock::now();
+    const WindowAdjustment adjustment = window_.adjust();
+    window_.retire();
+    estimate.times.bundle_ms = millisecondsSince(start);
+    estimate.windowRmsError_px = adjustment.rmsError_px;
+    estimate.outlierThreshold_px = adjustment.outlierThreshold_px;
+    estimate.bundleIterations = adjustment.summary.iterationCount();
+    rejectedTracks_.insert(rejectedTracks_.end(), adjustment.rejectedTracks.begin(), adjustment.rejectedTracks.end());
+    pose = window_.keyframes().back().cameraFromWorld;
+  }
+  estimate.cameraFromWorld = pose;
+  estimate.extrinsics = window_.extrinsicsAt(frame.time_s);
+  estimate.mapPoints = static_cast<int>(window_.points().size());
+  estimate.windowFrames = static_cast<int>(window_.keyframes().size());
+  return estimate;
+}
+
+}  // namespace lrsvo
