@@ -1,6 +1,5 @@
 // `lrsvo bal`: bundle adjustment of a BAL file, or of a generated BAL-format
 // problem, with any registered solver.
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -14,6 +13,7 @@
 #include "lrsvo/graph/optimizer.h"
 #include "lrsvo/graph/registry.h"
 #include "lrsvo/graph/robust_kernel.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo::cli {
 namespace {
@@ -34,10 +34,6 @@ struct BalCommandOptions {
   bool verbose = false;
 };
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 void writeText(const std::string& path, const std::string& text) {
   std::ofstream out(path);
   out << text << '\n';
@@ -46,11 +42,11 @@ void writeText(const std::string& path, const std::string& text) {
 }
 
 BalProblem loadProblem(const BalCommandOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch start;
   if (!o.generate) {
     BalProblem problem = readBal(o.file);
     std::printf("BAL problem %s: %zu cameras, %zu points, %zu observations (read in %.3f s)\n", o.file.c_str(),
-                problem.cameras.size(), problem.points.size(), problem.observations.size(), secondsSince(start));
+                problem.cameras.size(), problem.points.size(), problem.observations.size(), start.seconds());
     return problem;
   }
   BalProblem problem = generateBalProblem(o.generator);
@@ -58,7 +54,7 @@ BalProblem loadProblem(const BalCommandOptions& o) {
       "Generated BAL problem (seed %llu, pixel noise %.3g px): %zu cameras, %zu points, %zu observations "
       "(%.3f s)\n",
       static_cast<unsigned long long>(o.generator.seed), o.generator.pixelNoise, problem.cameras.size(),
-      problem.points.size(), problem.observations.size(), secondsSince(start));
+      problem.points.size(), problem.observations.size(), start.seconds());
   if (!o.write.empty()) {
     writeBal(problem, o.write);
     std::printf("Wrote the generated problem to %s\n", o.write.c_str());
@@ -71,15 +67,15 @@ void run(const BalCommandOptions& o) {
   SolverOptions solverOptions = SolverOptions::fromName(o.solver);
   solverOptions.threads = o.threads;
   solverOptions.maxIterations = o.maxIterations;
-  solverOptions.damping = o.damping == "additive" ? Damping::kAdditive : Damping::kMultiplicative;
+  solverOptions.lm.damping = o.damping == "additive" ? Damping::kAdditive : Damping::kMultiplicative;
   solverOptions.verbose = o.verbose;
   const Optimizer optimizer(solverOptions);
 
   BalProblem problem = loadProblem(o);
   const double startRms = rmsReprojectionError(problem);
-  const auto buildStart = std::chrono::steady_clock::now();
+  const Stopwatch buildStart;
   Graph graph = makeBalGraph(problem, o.kernel, o.kernelDelta);
-  std::printf("Graph built in %.3f s", secondsSince(buildStart));
+  std::printf("Graph built in %.3f s", buildStart.seconds());
   if (!o.kernel.empty()) std::printf(", robust kernel %s, delta %g px", o.kernel.c_str(), o.kernelDelta);
   std::printf("\n");
 

@@ -109,7 +109,7 @@ SolveResult solveOnce(const Contender& contender, const BalProblem& start, const
   options.algorithm = named.algorithm;
   options.linearSolver = named.linearSolver;
   Graph graph = makeBalGraph(start);
-  const bench::Stopwatch stopwatch;
+  const Stopwatch stopwatch;
   const SolverSummary summary = Optimizer(options).optimize(graph);
   return bench::resultFromSummary(summary, stopwatch);
 }
@@ -225,7 +225,7 @@ void runBenchBal(const BenchBalOptions& options) {
   if (!options.json.empty()) bench::writeJson({}, options.json);  // fail now, not after the solves
 
   SolverOptions stopping;  // Ceres' default tolerances
-  stopping.damping = Damping::kMultiplicative;
+  stopping.lm.damping = Damping::kMultiplicative;
   stopping.maxIterations = options.maxIterations;
 
   printPreamble(stopping, options.repeat);

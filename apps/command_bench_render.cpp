@@ -46,7 +46,7 @@ void benchRender(const BenchRenderOptions& o) {
   };
   for (int i = 0; i < o.warmUp; ++i) stream(i);
   const RenderTimes before = source.renderTimes();
-  const bench::Stopwatch stopwatch;
+  const Stopwatch stopwatch;
   for (int i = 0; i < frames; ++i) {
     stream(o.warmUp + i);
     if ((i + 1) % 10 == 0 || i + 1 == frames)

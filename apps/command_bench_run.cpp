@@ -105,7 +105,7 @@ void benchRun(BenchRunOptions o) {
     if (flight) {
       pipeline.process(flight->frames[static_cast<std::size_t>(frame - 1)]);
     } else {
-      bench::Stopwatch render;
+      Stopwatch render;
       std::optional<StereoFrame> images = source->next();
       sourceSeconds += render.seconds();
       if (!images) break;

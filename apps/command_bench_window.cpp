@@ -57,8 +57,8 @@ struct BenchWindowOptions {
   int nloptRepeat = 1;
   int nloptEvaluations = 1000;
   int nloptRounds = 3;
-  double barrierMu = ConstraintSettings{}.barrierMu;
-  int barrierRounds = ConstraintSettings{}.barrierRounds;
+  std::optional<double> barrierMu;  // unset: the method's own default
+  std::optional<int> barrierRounds;
   bool kitti = true;
   // Relative to the working directory: the repository's top, with the shared data beside it.
   std::string kittiDirectory = "../shared/data/gtsam_stereo_vo";
@@ -95,6 +95,28 @@ const char* const kCeresWithoutBounds = "DENSE_SCHUR_NO_BOUNDS";
 
 // Every registered constraint method (LM ones first, NLopt last), each LM one
 // with every linear solver, then Ceres; filtered by --solvers.
+// A method's specification with the settings the bench's options give it.
+std::string methodSpecification(const std::string& method, const BenchWindowOptions& o) {
+  std::string settings;
+  const auto add = [&](const std::string& setting) { settings += (settings.empty() ? ":" : ",") + setting; };
+  if (method == "log_barrier") {
+    if (o.barrierMu) add(format("mu=%.17g", *o.barrierMu));
+    if (o.barrierRounds) add(format("rounds=%d", *o.barrierRounds));
+  } else if (isNlopt(method)) {
+    add(format("evaluations=%d", o.nloptEvaluations));
+    add(format("rounds=%d", o.nloptRounds));
+  }
+  return method + settings;
+}
+
+// "name: setting=value ..." of the method as the bench runs it.
+std::string describeMethod(const std::string& method, const BenchWindowOptions& o) {
+  std::string text = method + ":";
+  const std::unique_ptr<ConstraintMethod> made = makeConstraintMethod(methodSpecification(method, o));
+  for (const MethodSetting& setting : made->ownSettings()) text += " " + setting.name + "=" + setting.valueText();
+  return text;
+}
+
 std::vector<Contender> windowContenders(const BenchWindowOptions& options) {
   std::vector<std::string> methods;
   for (const auto& [name, entry] : Registry<ConstraintMethod>::instance().entries()) methods.push_back(name);
@@ -206,7 +228,7 @@ struct WindowRow {
 // Solves the problem's start once with the contender; returns the result and
 // leaves the solution in the graph.
 SolveResult solveOnce(const Contender& contender, BenchProblem& problem, const SolverOptions& stopping,
-                      const ConstraintSettings& settings) {
+                      const BenchWindowOptions& o) {
   problem.restoreStart();
   if (contender.ceres) {
     const Bounds none;
@@ -222,14 +244,14 @@ SolveResult solveOnce(const Contender& contender, BenchProblem& problem, const S
   }
   SolverOptions options = stopping;
   if (!contender.linearSolver.empty()) options.linearSolver = contender.linearSolver;
-  const bench::Stopwatch stopwatch;
+  const Stopwatch stopwatch;
   const SolverSummary summary =
-      optimizeWithBounds(problem.graph(), options, problem.bounds(), contender.method, settings);
+      optimizeWithBounds(problem.graph(), options, problem.bounds(), methodSpecification(contender.method, o));
   return bench::resultFromSummary(summary, stopwatch);
 }
 
 void runProblem(BenchProblem& problem, const std::vector<Contender>& contenders, const SolverOptions& stopping,
-                const ConstraintSettings& settings, int repeat, int nloptRepeat, std::vector<WindowRow>& rows,
+                const BenchWindowOptions& o, int repeat, int nloptRepeat, std::vector<WindowRow>& rows,
                 std::vector<std::string>& failures) {
   for (const Contender& contender : contenders) {
     WindowRow row;
@@ -248,7 +270,7 @@ void runProblem(BenchProblem& problem, const std::vector<Contender>& contenders,
       row.bench.result = bench::medianRun(
           runs,
           [&] {
-            const SolveResult result = solveOnce(contender, problem, stopping, settings);
+            const SolveResult result = solveOnce(contender, problem, stopping, o);
             row.bounds = inspectBounds(problem.bounds());
             row.heldInEveryRun = row.heldInEveryRun && row.bounds.held;
             return result;
@@ -449,8 +471,7 @@ void printPreamble(const BenchWindowOptions& o, const SolverOptions& stopping) {
                    "start lambda 1e-4, %d thread(s)\n",
                    stopping.functionTolerance, stopping.gradientTolerance, stopping.parameterTolerance,
                    stopping.maxIterations, stopping.threads)
-            << format("log_barrier: mu %g, %d round(s); nlopt_*: at most %d evaluations x %d rounds\n", o.barrierMu,
-                      o.barrierRounds, o.nloptEvaluations, o.nloptRounds)
+            << describeMethod("log_barrier", o) << "; " << describeMethod("nlopt_lbfgs", o) << " (nlopt_*)\n"
             << format(
                    "times: wall time of the solve call, median of %d run(s) (KITTI %d, NLopt %d); cpu s = process "
                    "CPU time of that call\n",
@@ -479,11 +500,6 @@ void runBenchWindow(const BenchWindowOptions& o) {
   stopping.algorithm = "lm";
   stopping.maxIterations = o.maxIterations;
   stopping.threads = o.threads;
-  ConstraintSettings settings;
-  settings.barrierMu = o.barrierMu;
-  settings.barrierRounds = o.barrierRounds;
-  settings.nloptMaxEvaluations = o.nloptEvaluations;
-  settings.nloptMaxRounds = o.nloptRounds;
   printPreamble(o, stopping);
 
   std::vector<WindowRow> rows;
@@ -509,7 +525,7 @@ void runBenchWindow(const BenchWindowOptions& o) {
           options.trueOutsideBounds ? "outside" : "inside");
       BenchProblem problem(name, window.graph, window.extrinsicBounds, fields);
       const std::size_t first = rows.size();
-      runProblem(problem, contenders, stopping, settings, o.repeat, o.nloptRepeat, rows, failures);
+      runProblem(problem, contenders, stopping, o, o.repeat, o.nloptRepeat, rows, failures);
       computeRatios(rows, first);
     }
   }
@@ -535,7 +551,7 @@ void runBenchWindow(const BenchWindowOptions& o) {
     const Bounds none;
     BenchProblem problem(kKittiProblem, vo.graph, none, fields);
     const std::size_t first = rows.size();
-    runProblem(problem, kitti, stopping, settings, o.kittiRepeat, o.kittiRepeat, rows, failures);
+    runProblem(problem, kitti, stopping, o, o.kittiRepeat, o.kittiRepeat, rows, failures);
     computeRatios(rows, first);
   }
 
@@ -593,9 +609,9 @@ void addBenchWindow(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--nlopt-rounds", o->nloptRounds, "NLopt: rounds (re-anchoring the poses)")
       ->capture_default_str();
-  command->add_option("--barrier-mu", o->barrierMu, "log_barrier: starting mu")->capture_default_str();
-  command->add_option("--barrier-rounds", o->barrierRounds, "log_barrier: rounds, mu x 0.1 after each")
-      ->capture_default_str();
+  command->add_option("--barrier-mu", o->barrierMu, "log_barrier: starting mu (default: the method's)");
+  command->add_option("--barrier-rounds", o->barrierRounds,
+                      "log_barrier: rounds, mu x 0.1 after each (default: the method's)");
   command->add_flag("!--no-kitti", o->kitti, "Leave out the KITTI problem");
   CLI::Option* kittiDirectory =
       command

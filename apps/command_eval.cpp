@@ -1,7 +1,6 @@
 // `lrsvo eval ESTIMATE GROUNDTRUTH`: the trajectory metrics of an estimate
 // against the truth (ATE, RPE, KITTI drift, scale and end-point error), as a
 // table, metrics.json and plots.
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +15,7 @@
 #include "lrsvo/eval/trajectory_plots.h"
 #include "lrsvo/frontend/datasets/pose_file.h"
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo::cli {
 namespace {
@@ -87,7 +87,7 @@ void printMetrics(const TrajectoryMetrics& m) {
 }
 
 void runEvalCommand(const EvalCommandOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch start;
   const PoseFileFormat estimateFormat = formatOf(o, o.estimate);
   const PoseFileFormat truthFormat = formatOf(o, o.truth);
   const bool byIndex = estimateFormat == PoseFileFormat::kKitti && truthFormat == PoseFileFormat::kKitti;
@@ -126,7 +126,7 @@ void runEvalCommand(const EvalCommandOptions& o) {
   const bool timesKnown = !byIndex || !o.times.empty();
   const std::filesystem::path table = writeTrajectoryTable(outDir, matched, metrics, timesKnown);
   const TrajectoryPlots plots = o.noPlot ? TrajectoryPlots{} : plotTrajectory(outDir);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = start.seconds();
 
   std::printf("%s against %s (%zu of %zu estimated poses matched by %s)\n", o.estimate.c_str(), o.truth.c_str(),
               metrics.frames, estimate.size(), byIndex ? "index" : "time");

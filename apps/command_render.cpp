@@ -1,13 +1,13 @@
 // `lrsvo render SCENARIO --out DIR [--first I] [--frames N]`: renders a synthetic flight
 // (sim/scenario.h: demo, paper or a YAML file) to images in the EuRoC layout,
 // with the ground truth beside them, so that any stereo VO can run on it.
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "apps/command.h"
 #include "lrsvo/frontend/odometry/odometry_run.h"
+#include "lrsvo/graph/stopwatch.h"
 #include "lrsvo/sim/euroc_writer.h"
 #include "lrsvo/sim/sim_frame_source.h"
 
@@ -29,12 +29,12 @@ void runRender(const RenderCommandOptions& o) {
   const int frames = framesInRun(source.frameCount(), o.first, o.frames);
   EurocWriter writer(o.out, source.rig(), scenario.flight.frameRate_hz / scenario.flight.frameStep);
   const FlightTruth& truth = source.truth();
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch start;
   double lastReport = -1.0;
   for (int i = 0; i < frames; ++i) {
     const int index = o.first + i;
     writer.write(source.render(index), truth.cameraFromWorld[index].inverse(), truth.extrinsics[index]);
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double elapsed = start.seconds();
     if (elapsed - lastReport >= 1.0 || i + 1 == frames) {
       const double fps = (i + 1) / elapsed;
       std::fprintf(stderr, "\rrender %s: frame %d/%d, %.2f frames/s, ETA %.0f s   ", source.name().c_str(), i + 1,

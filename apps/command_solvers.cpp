@@ -2,6 +2,7 @@
 // plugin shows up here without editing this file.
 #include <algorithm>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "apps/command.h"
@@ -34,6 +35,21 @@ void printRegistry(const char* title) {
   std::printf("\n");
 }
 
+// Each method with its own settings and their defaults: a method is chosen as
+// name[:setting=value,...].
+void printConstraintMethods() {
+  std::printf("Constraint methods (bounds on parameters; name[:setting=value,...]):\n");
+  const int width = static_cast<int>(longestName<ConstraintMethod>());
+  for (const auto& [name, entry] : Registry<ConstraintMethod>::instance().entries()) {
+    std::printf("  %-*s  %s\n", width, name.c_str(), entry.description.c_str());
+    const std::unique_ptr<ConstraintMethod> method = entry.factory();
+    for (const MethodSetting& setting : method->ownSettings())
+      std::printf("  %-*s    %s=%s  %s\n", width, "", setting.name.c_str(), setting.valueText().c_str(),
+                  setting.description.c_str());
+  }
+  std::printf("\n");
+}
+
 void printSolverNames() {
   std::printf("Solver names (<algorithm>_<linear solver>, for --solver):\n");
   for (const auto& algorithm : Registry<OptimizationAlgorithm>::instance().entries()) {
@@ -51,7 +67,7 @@ void listAll() {
   printRegistry<LinearSolver>("Linear solvers:");
   printSolverNames();
   std::printf("\n");
-  printRegistry<ConstraintMethod>("Constraint methods (bounds on parameters):");
+  printConstraintMethods();
   printRegistry<RobustKernel>("Robust kernels (--kernel):");
   printRegistry<Vertex>("Vertex types (graph file tags):");
   printRegistry<Edge>("Edge types (graph file tags):");

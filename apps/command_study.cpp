@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -15,6 +14,7 @@
 #include "lrsvo/eval/study.h"
 #include "lrsvo/eval/study_index.h"
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo::cli {
 namespace {
@@ -34,10 +34,9 @@ class ProgressPrinter {
   explicit ProgressPrinter(std::string study) : study_(std::move(study)), terminal_(isatty(fileno(stderr)) != 0) {}
 
   void operator()(double fraction, const std::string& message) {
-    const auto now = std::chrono::steady_clock::now();
     const bool done = fraction >= 1.0;
     if (terminal_) {
-      if (!done && printed_ && now - last_ < std::chrono::milliseconds(250)) return;
+      if (!done && printed_ && sinceLast_.seconds() < 0.25) return;
       std::fprintf(stderr, "\r\033[K[%s] %3.0f%% %s", study_.c_str(), 100.0 * fraction, message.c_str());
       if (done) std::fputc('\n', stderr);
     } else {
@@ -46,7 +45,7 @@ class ProgressPrinter {
     }
     std::fflush(stderr);
     printed_ = true;
-    last_ = now;
+    sinceLast_.restart();
     lastMessage_ = message;
   }
 
@@ -54,7 +53,7 @@ class ProgressPrinter {
   std::string study_;
   bool terminal_;
   bool printed_ = false;
-  std::chrono::steady_clock::time_point last_;
+  Stopwatch sinceLast_;  // since the last line printed
   std::string lastMessage_;
 };
 
@@ -71,10 +70,10 @@ StudyOptions studyOptions(const StudyCommandOptions& o, const std::string& name,
 
 // Runs one study, writes its report and prints its checks; returns the wall time.
 double runOne(const Study& study, const StudyOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   const StudyReport report = study.run(options);
   report.write(options);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = stopwatch.seconds();
   report.print(std::cout);
   std::cout << "  report in " << options.outDir.string() << "/ (summary.json, CSV";
   if (std::filesystem::exists(options.outDir / (study.name + ".png"))) std::cout << ", " << study.name << ".png";
@@ -118,12 +117,12 @@ void runAll(const StudyCommandOptions& o) {
   std::string failed;
   for (const Study* study : studiesInFigureOrder()) {
     StudyOutcome outcome{study->name, study->figure, study->title, 0.0, ""};
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     try {
       outcome.wallSeconds = runOne(*study, studyOptions(o, study->name, outDir / study->name));
     } catch (const std::exception& e) {
       outcome.error = e.what();
-      outcome.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      outcome.wallSeconds = stopwatch.seconds();
       failed += (failed.empty() ? "" : ", ") + study->name;
       std::cerr << "[" << study->name << "] failed: " << e.what() << '\n';
     }

@@ -12,9 +12,10 @@ namespace lrsvo::cli {
 void OdometrySettings::addOptions(CLI::App& command) {
   command
       .add_option("--constraint", constraint,
-                  "How the stereo extrinsic S is kept inside its bounds in the window adjustment: log_barrier (the "
-                  "paper's), gradient_projection, nlopt_lbfgs, nlopt_mma, or none (S free: the paper's "
-                  "unconstrained comparison)")
+                  "How the stereo extrinsic S is kept inside its bounds in the window adjustment, as "
+                  "name[:setting=value,...]: log_barrier (the paper's), gradient_projection, nlopt_lbfgs, nlopt_mma, "
+                  "or none (S free: the paper's unconstrained comparison); settings not named keep the method's "
+                  "defaults (`lrsvo solvers` lists them), e.g. log_barrier:mu=0.001,rounds=2")
       ->capture_default_str();
   command.add_flag("--rigid", rigid, "Hold S at its calibration (conventional rigid stereo VO, the failing baseline)");
   command.add_option("--window", window, "Keyframes in the sliding window (paper: 12-15)")
@@ -80,12 +81,12 @@ RunOptions OdometrySettings::runOptions() const {
   odometry.anchorKeyframes = anchors;
   odometry.scaleDriftPerKeyframe = scaleDrift;
   odometry.extrinsicRateSigma = extrinsicRate;
-  odometry.solver = solver;
+  odometry.solver.setName(solver);
   odometry.seed = seed;
   odometry.outliers.sigmas = outlierSigmas;
   if (rigid)
     odometry.extrinsicMode = ExtrinsicMode::kRigid;
-  else if (constraint == "none")
+  else if (constraintMethodName(constraint) == "none")
     odometry.extrinsicMode = ExtrinsicMode::kFree;
   else
     odometry.constraintMethod = constraint;

@@ -17,7 +17,7 @@ namespace lrsvo::cli {
 // The odometry settings a user picks on the command line (`lrsvo run`,
 // `lrsvo bench run`), with the library's defaults.
 struct OdometrySettings {
-  std::string constraint = "log_barrier";
+  std::string constraint = OdometryOptions{}.constraintMethod;
   bool rigid = false;
   int window = 15;
   int anchors = 5;
@@ -28,7 +28,7 @@ struct OdometrySettings {
   double band_px = 8.0;
   double outlierSigmas = OutlierTestOptions{}.sigmas;
   double minDepth_m = 20.0;
-  std::string solver = "lm_schur_dense";
+  std::string solver = OdometryOptions{}.solver.name();
   std::uint64_t seed = 1;
   std::string onBadFrame = "skip";
 

@@ -35,8 +35,8 @@ SolverSummary ConstraintMethod::solve(Graph& graph, const SolverOptions& options
 }
 
 SolverSummary optimizeWithBounds(Graph& graph, const SolverOptions& options, const Bounds& bounds,
-                                 const std::string& method, const ConstraintSettings& settings) {
-  auto constraints = Registry<ConstraintMethod>::instance().create(method);
+                                 const std::string& specification, const ConstraintSettings& settings) {
+  std::unique_ptr<ConstraintMethod> constraints = makeConstraintMethod(specification);
   constraints->setBounds(bounds);
   constraints->setSettings(settings);
   return constraints->solve(graph, options);

@@ -15,11 +15,17 @@ namespace {
 // interior-point schedule; one round keeps mu fixed.
 class LogBarrier : public ConstraintMethod {
  public:
+  LogBarrier() {
+    declare("mu", &startMu_, "weight mu of -mu log(1 - y^2), y = (x - centre) / half-width, in the first round");
+    declare("decrease", &decrease_, "factor on mu after each round");
+    declare("rounds", &rounds_, "outer solves, each from the last one's iterate (1: mu fixed)");
+  }
+
   SolverSummary solve(Graph& graph, const SolverOptions& options) override {
     const double initialCost = graph.cost();
     SolverSummary total;
-    mu_ = settings_.barrierMu;
-    for (round_ = 0; round_ < std::max(1, settings_.barrierRounds); ++round_, mu_ *= settings_.barrierDecrease) {
+    mu_ = startMu_;
+    for (round_ = 0; round_ < std::max(1, rounds_); ++round_, mu_ *= decrease_) {
       const SolverSummary part = ConstraintMethod::solve(graph, options);
       if (round_ == 0)
         total = part;
@@ -48,6 +54,9 @@ class LogBarrier : public ConstraintMethod {
   }
 
  private:
+  double startMu_ = 1e-2;
+  double decrease_ = 0.1;
+  int rounds_ = 3;
   double mu_ = 0.0;
   int round_ = 0;
   std::vector<const Edge*> edges_;

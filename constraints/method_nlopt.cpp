@@ -1,4 +1,3 @@
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -11,11 +10,10 @@
 #include "lrsvo/graph/block_system.h"
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/registry.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // Bound-constrained minimisation of the same graph by an NLopt algorithm,
 // with the graph's analytic gradient: a reference for small graphs and a
@@ -25,10 +23,13 @@ using Clock = std::chrono::steady_clock;
 // improving the cost.
 class NloptMethod : public ConstraintMethod {
  public:
-  NloptMethod(nlopt::algorithm algorithm, std::string name) : algorithm_(algorithm), name_(std::move(name)) {}
+  NloptMethod(nlopt::algorithm algorithm, std::string name) : algorithm_(algorithm), name_(std::move(name)) {
+    declare("evaluations", &maxEvaluations_, "NLopt's evaluations per round");
+    declare("rounds", &maxRounds_, "rounds at most, each re-anchoring the tangent space at the last one's result");
+  }
 
   SolverSummary solve(Graph& graph, const SolverOptions& options) override {
-    const auto start = Clock::now();
+    const Stopwatch start;
     enforceStart(false);
     BlockSystem system(graph, false);
     SolverSummary summary;
@@ -44,7 +45,7 @@ class NloptMethod : public ConstraintMethod {
     Objective objective{system, options.threads, 0};
     double cost = summary.initialCost;
     summary.termination = Termination::kMaxIterations;
-    for (int round = 1; round <= settings_.nloptMaxRounds; ++round) {
+    for (int round = 1; round <= maxRounds_; ++round) {
       system.saveEstimates();
       nlopt::opt optimizer(algorithm_, static_cast<unsigned>(system.scalarCount()));
       std::vector<double> lower, upper;
@@ -54,7 +55,7 @@ class NloptMethod : public ConstraintMethod {
       optimizer.set_min_objective(&Objective::evaluate, &objective);
       optimizer.set_ftol_rel(options.functionTolerance);
       optimizer.set_xtol_rel(options.parameterTolerance);
-      optimizer.set_maxeval(settings_.nloptMaxEvaluations);
+      optimizer.set_maxeval(maxEvaluations_);
       std::vector<double> dx(system.scalarCount(), 0.0);
       double roundCost = cost;
       try {
@@ -79,7 +80,7 @@ class NloptMethod : public ConstraintMethod {
                                     .costChange = decrease,
                                     .stepNorm = Eigen::Map<const Eigen::VectorXd>(dx.data(), dx.size()).norm(),
                                     .accepted = true,
-                                    .cumulativeSeconds = std::chrono::duration<double>(Clock::now() - start).count()});
+                                    .cumulativeSeconds = start.seconds()});
       ++summary.successfulSteps;
       if (decrease <= options.functionTolerance * cost) {
         summary.termination = Termination::kFunctionTolerance;
@@ -88,7 +89,7 @@ class NloptMethod : public ConstraintMethod {
     }
     summary.finalCost = cost;
     summary.linearizeSeconds = objective.seconds;
-    summary.totalSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    summary.totalSeconds = start.seconds();
     summary.message += (summary.message.empty() ? "" : "; ") + std::to_string(objective.evaluations) + " evaluations";
     return summary;
   }
@@ -102,13 +103,13 @@ class NloptMethod : public ConstraintMethod {
 
     static double evaluate(const std::vector<double>& dx, std::vector<double>& gradient, void* data) {
       auto& self = *static_cast<Objective*>(data);
-      const auto start = Clock::now();
+      const Stopwatch start;
       ++self.evaluations;
       self.system.restoreEstimates();
       self.system.applyStep(Eigen::Map<const Eigen::VectorXd>(dx.data(), dx.size()));
       double cost = self.system.fill(self.threads);
       if (!gradient.empty()) Eigen::Map<Eigen::VectorXd>(gradient.data(), gradient.size()) = self.system.gradient();
-      self.seconds += std::chrono::duration<double>(Clock::now() - start).count();
+      self.seconds += start.seconds();
       return std::isfinite(cost) ? cost : std::numeric_limits<double>::max();
     }
   };
@@ -128,6 +129,8 @@ class NloptMethod : public ConstraintMethod {
 
   nlopt::algorithm algorithm_;
   std::string name_;
+  int maxEvaluations_ = 5000;
+  int maxRounds_ = 20;
 };
 
 void addNlopt(Registry<ConstraintMethod>& registry, const char* name, nlopt::algorithm algorithm,

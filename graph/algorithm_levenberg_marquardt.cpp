@@ -9,24 +9,20 @@ namespace lrsvo {
 namespace {
 
 // Levenberg-Marquardt with Nielsen's lambda update (as Ceres' trust region):
-// a step is taken only when it lowers the cost by a relative gain > 1e-3;
-// otherwise the estimates are restored and lambda grows geometrically.
+// a step is taken only when it lowers the cost by a relative gain above
+// LevenbergMarquardtOptions::minRelativeDecrease; otherwise the estimates are
+// restored and lambda grows geometrically.
 class LevenbergMarquardt : public OptimizationAlgorithm {
  public:
   void run(OptimizationContext& context) override {
-    constexpr double kMinRelativeDecrease = 1e-3;
-    constexpr double kMaxLambda = 1e32;
-    constexpr double kMinLambda = 1e-16;
-    constexpr double kMinDiagonal = 1e-6;
-    constexpr double kMaxDiagonal = 1e32;
-
     const SolverOptions& options = context.options();
+    const LevenbergMarquardtOptions& lm = options.lm;
     SolverSummary& summary = context.summary();
     BlockSystem& system = context.system();
-    const bool multiplicative = options.damping == Damping::kMultiplicative;
+    const bool multiplicative = lm.damping == Damping::kMultiplicative;
 
     double cost = context.linearize();
-    double lambda = options.initialLambda;
+    double lambda = lm.initialLambda;
     if (lambda < 0) lambda = multiplicative ? 1e-4 : 1e-4 * system.diagonal().maxCoeff();
     double growth = 2.0;
     summary.iterations.front().gradientMaxNorm = context.constraints().gradientMaxNorm(system);
@@ -48,7 +44,7 @@ class LevenbergMarquardt : public OptimizationAlgorithm {
       }
 
       for (int i = 0; i < shift.size(); ++i)
-        shift[i] = multiplicative ? lambda * std::clamp(system.diagonal()[i], kMinDiagonal, kMaxDiagonal) : lambda;
+        shift[i] = multiplicative ? lambda * std::clamp(system.diagonal()[i], lm.minDiagonal, lm.maxDiagonal) : lambda;
       IterationRecord record{.iteration = iteration, .cost = cost, .gradientMaxNorm = gradientNorm, .lambda = lambda};
 
       bool accepted = false;
@@ -66,14 +62,14 @@ class LevenbergMarquardt : public OptimizationAlgorithm {
         const double decrease = cost - trialCost;
         record.costChange = decrease;
         const double gain = decrease / predicted;
-        accepted = std::isfinite(trialCost) && decrease > 0 && predicted > 0 && gain > kMinRelativeDecrease;
+        accepted = std::isfinite(trialCost) && decrease > 0 && predicted > 0 && gain > lm.minRelativeDecrease;
         if (accepted) {
           const double relativeDecrease = decrease / cost;
           cost = trialCost;
           record.cost = cost;
           record.accepted = true;
           ++summary.successfulSteps;
-          lambda = std::max(kMinLambda, lambda * std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3)));
+          lambda = std::max(lm.minLambda, lambda * std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3)));
           growth = 2.0;
           if (relativeDecrease <= options.functionTolerance) {
             context.record(record);
@@ -91,7 +87,7 @@ class LevenbergMarquardt : public OptimizationAlgorithm {
         growth *= 2.0;
       }
       context.record(record);
-      if (lambda > kMaxLambda) {
+      if (lambda > lm.maxLambda) {
         summary.termination = Termination::kDampingLimit;
         break;
       }

@@ -1,8 +1,7 @@
 #include "lrsvo/graph/full_solver.h"
 
-#include <chrono>
-
 #include "lrsvo/graph/parallel_for.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 
@@ -15,7 +14,7 @@ void FullSolver::analyze(const BlockSystem& system) {
 }
 
 bool FullSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch start;
   backend_->setZero();
   const auto& blocks = system.blocks();
   parallelFor(0, static_cast<int>(blocks.size()), threads, [&](int k) {
@@ -26,7 +25,7 @@ bool FullSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, Ei
       for (int r = 0; r < rows; ++r) target.data[c * target.ld + r] = source[c * rows + r];
   });
   const bool ok = backend_->solve(rhs, x);
-  times_.factorizeSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  times_.factorizeSeconds += start.seconds();
   return ok;
 }
 

@@ -1,12 +1,11 @@
 #pragma once
 
-#include <chrono>
-
 #include "lrsvo/graph/block_system.h"
 #include "lrsvo/graph/constraint_handler.h"
 #include "lrsvo/graph/linear_solver.h"
 #include "lrsvo/graph/solver_options.h"
 #include "lrsvo/graph/solver_summary.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 
@@ -49,7 +48,7 @@ class OptimizationContext {
   ConstraintHandler& constraints_;
   const SolverOptions& options_;
   SolverSummary& summary_;
-  std::chrono::steady_clock::time_point start_;
+  Stopwatch stopwatch_;  // since the context was made
   double lastRecordSeconds_ = 0.0;
   bool stepAdjusted_ = false;
 };

@@ -5,26 +5,15 @@
 
 namespace lrsvo {
 
-using Clock = std::chrono::steady_clock;
-
-namespace {
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-}  // namespace
-
 OptimizationContext::OptimizationContext(BlockSystem& system, LinearSolver& solver, ConstraintHandler& constraints,
                                          const SolverOptions& options, SolverSummary& summary)
-    : system_(system),
-      solver_(solver),
-      constraints_(constraints),
-      options_(options),
-      summary_(summary),
-      start_(Clock::now()) {}
+    : system_(system), solver_(solver), constraints_(constraints), options_(options), summary_(summary) {}
 
 double OptimizationContext::linearize() {
-  const auto start = Clock::now();
+  const Stopwatch start;
   const double cost = system_.fill(options_.threads);
   constraints_.constrainSystem(system_);
-  summary_.linearizeSeconds += secondsSince(start);
+  summary_.linearizeSeconds += start.seconds();
   return cost;
 }
 
@@ -54,9 +43,9 @@ void OptimizationContext::applyStep(const Eigen::VectorXd& dx) {
 }
 
 double OptimizationContext::cost() {
-  const auto start = Clock::now();
+  const Stopwatch start;
   const double value = system_.cost(options_.threads);
-  summary_.costSeconds += secondsSince(start);
+  summary_.costSeconds += start.seconds();
   return value;
 }
 
@@ -72,7 +61,7 @@ double OptimizationContext::estimateNorm() const {
   return std::sqrt(squared);
 }
 
-double OptimizationContext::elapsedSeconds() const { return secondsSince(start_); }
+double OptimizationContext::elapsedSeconds() const { return stopwatch_.seconds(); }
 
 void OptimizationContext::record(IterationRecord record) {
   record.cumulativeSeconds = elapsedSeconds();

@@ -1,6 +1,5 @@
 #include "lrsvo/graph/optimizer.h"
 
-#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -8,12 +7,11 @@
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/optimization_algorithm.h"
 #include "lrsvo/graph/registry.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 void checkEstimatesFinite(const Graph& graph) {
   std::vector<double> values;
@@ -56,11 +54,23 @@ SolverOptions SolverOptions::fromName(const std::string& name) {
   if (split == std::string::npos) throw Error("solver name '" + name + "' is not <algorithm>_<linear solver>");
   options.algorithm = name.substr(0, split);
   options.linearSolver = name.substr(split + 1);
-  if (!Registry<OptimizationAlgorithm>::instance().contains(options.algorithm))
-    Registry<OptimizationAlgorithm>::instance().create(options.algorithm);  // throws, listing known names
-  if (!Registry<LinearSolver>::instance().contains(options.linearSolver))
-    Registry<LinearSolver>::instance().create(options.linearSolver);
+  options.validate();
   return options;
+}
+
+void SolverOptions::setName(const std::string& name) {
+  const SolverOptions named = fromName(name);
+  algorithm = named.algorithm;
+  linearSolver = named.linearSolver;
+}
+
+void SolverOptions::validate() const {
+  if (!Registry<OptimizationAlgorithm>::instance().contains(algorithm))
+    Registry<OptimizationAlgorithm>::instance().create(algorithm);  // throws, listing known names
+  if (!Registry<LinearSolver>::instance().contains(linearSolver))
+    Registry<LinearSolver>::instance().create(linearSolver);
+  if (threads < 1) throw Error("solver: threads must be at least 1");
+  if (maxIterations < 0) throw Error("solver: max iterations must not be negative");
 }
 
 Optimizer::Optimizer(SolverOptions options) : options_(std::move(options)) {
@@ -74,7 +84,7 @@ SolverSummary Optimizer::optimize(Graph& graph) const {
 }
 
 SolverSummary Optimizer::optimize(Graph& graph, ConstraintHandler& constraints) const {
-  const auto start = Clock::now();
+  const Stopwatch start;
   if (graph.empty()) throw Error("optimise: the graph has no vertices");
   checkEstimatesFinite(graph);
   auto algorithm = Registry<OptimizationAlgorithm>::instance().create(options_.algorithm);
@@ -92,12 +102,12 @@ SolverSummary Optimizer::optimize(Graph& graph, ConstraintHandler& constraints) 
   summary.parameterCount = system.scalarCount();
   summary.initialCost = system.cost(options_.threads);
   if (!std::isfinite(summary.initialCost)) throwNonFiniteCost(graph);
-  summary.setupSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  summary.setupSeconds = start.seconds();
 
   OptimizationContext context(system, *solver, constraints, options_, summary);
   context.record(IterationRecord{.iteration = 0, .cost = summary.initialCost, .lambda = 0.0});
   algorithm->run(context);
-  summary.totalSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  summary.totalSeconds = start.seconds();
   return summary;
 }
 

@@ -1,6 +1,5 @@
 #include "lrsvo/graph/schur_solver.h"
 
-#include <chrono>
 #include <map>
 #include <string>
 
@@ -8,12 +7,11 @@
 
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/parallel_for.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 template <int DI, int DL, int DJ>
 void subtractProduct(const double* y, const double* w, double* s, int ld, int di, int dl, int dj) {
@@ -141,7 +139,7 @@ void SchurSolver::analyze(const BlockSystem& system) {
 }
 
 bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) {
-  const auto start = Clock::now();
+  Stopwatch phase;
   const int freeCount = system.freeCount();
   const int marginalCount = system.blockCount() - freeCount;
   const auto& blocks = system.blocks();
@@ -180,11 +178,11 @@ bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, E
           Eigen::Map<const Eigen::MatrixXd>(yValues_.data() + yOffsets_[k], di, dl) * rhs.segment(system.offset(l), dl);
     }
   });
-  const auto reducedTime = Clock::now();
+  const double reduceSeconds = phase.lap();
 
   Eigen::VectorXd xFree;
   const bool ok = freeCount == 0 || backend_->solve(reducedRhs, xFree);
-  const auto solvedTime = Clock::now();
+  const double solveSeconds = phase.lap();
   if (!ok) return false;
 
   x.resize(system.scalarCount());
@@ -195,9 +193,8 @@ bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, E
     else
       backSubstitute<Eigen::Dynamic>(system, rhs, xFree, l, x);
   });
-  const auto end = Clock::now();
-  times_.schurSeconds += std::chrono::duration<double>((reducedTime - start) + (end - solvedTime)).count();
-  times_.factorizeSeconds += std::chrono::duration<double>(solvedTime - reducedTime).count();
+  times_.schurSeconds += reduceSeconds + phase.seconds();
+  times_.factorizeSeconds += solveSeconds;
   return x.allFinite();
 }
 

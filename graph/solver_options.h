@@ -11,13 +11,27 @@ enum class Damping {
   kAdditive,        // diag(H) + lambda
 };
 
-struct SolverOptions {
-  std::string algorithm = "lm";                // Registry<OptimizationAlgorithm> name
-  std::string linearSolver = "schur_cholmod";  // Registry<LinearSolver> name
+// Levenberg-Marquardt's own settings. A step is taken when its gain (actual
+// over predicted decrease) exceeds minRelativeDecrease; lambda then shrinks by
+// Nielsen's rule, otherwise it grows geometrically (2, 4, 8, ... times).
+struct LevenbergMarquardtOptions {
   Damping damping = Damping::kMultiplicative;
   // Starting lambda; a negative value picks the default (1e-4 multiplicative,
   // 1e-4 * max diag(H) additive).
   double initialLambda = -1.0;
+  double minRelativeDecrease = 1e-3;
+  double minLambda = 1e-16;
+  double maxLambda = 1e32;  // beyond it the solve stops (Termination::kDampingLimit)
+  // The multiplicative damping lambda * diag(H) clamps diag(H) to this range,
+  // so a parameter with no curvature is still damped (Ceres' values).
+  double minDiagonal = 1e-6;
+  double maxDiagonal = 1e32;
+};
+
+struct SolverOptions {
+  std::string algorithm = "lm";                // Registry<OptimizationAlgorithm> name
+  std::string linearSolver = "schur_cholmod";  // Registry<LinearSolver> name
+  LevenbergMarquardtOptions lm;                // used by "lm"
   int maxIterations = 50;
   double functionTolerance = 1e-6;   // stop when |dF| / F <= this after a step
   double gradientTolerance = 1e-10;  // stop when max |projected gradient| <= this
@@ -30,6 +44,11 @@ struct SolverOptions {
   // Throws lrsvo::Error when either part is not registered.
   static SolverOptions fromName(const std::string& name);
   std::string name() const { return algorithm + "_" + linearSolver; }
+  // Takes the algorithm and linear solver of a name (fromName), keeping every other setting.
+  void setName(const std::string& name);
+  // Throws lrsvo::Error on an unregistered algorithm or linear solver, fewer
+  // than one thread or a negative iteration cap.
+  void validate() const;
 };
 
 }  // namespace lrsvo

@@ -7,10 +7,10 @@
 #include <utility>
 
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/seed_mix.h"
 #include "lrsvo/sim/flight_truth.h"
 #include "lrsvo/sim/footprint.h"
 #include "lrsvo/sim/scene_point_grid.h"
-#include "lrsvo/sim/seed_mix.h"
 
 namespace lrsvo {
 namespace {

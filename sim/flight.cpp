@@ -8,8 +8,8 @@
 #include <string>
 
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/seed_mix.h"
 #include "lrsvo/sim/flight_path.h"
-#include "lrsvo/sim/seed_mix.h"
 
 namespace lrsvo {
 namespace {

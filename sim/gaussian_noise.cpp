@@ -5,7 +5,7 @@
 #include <memory>
 #include <numbers>
 
-#include "lrsvo/sim/seed_mix.h"
+#include "lrsvo/graph/seed_mix.h"
 
 namespace lrsvo {
 namespace {

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/seed_mix.h"
 #include "lrsvo/sim/inline_math.h"
-#include "lrsvo/sim/seed_mix.h"
 #include "lrsvo/sim/value_noise.h"
 
 namespace lrsvo {

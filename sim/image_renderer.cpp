@@ -1,7 +1,6 @@
 #include "lrsvo/sim/image_renderer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -10,9 +9,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/seed_mix.h"
+#include "lrsvo/graph/stopwatch.h"
 #include "lrsvo/sim/gaussian_noise.h"
 #include "lrsvo/sim/pool_for.h"
-#include "lrsvo/sim/seed_mix.h"
 #include "lrsvo/sim/surface_view.h"
 
 namespace lrsvo {
@@ -21,11 +21,6 @@ namespace {
 constexpr std::uint64_t kGainStream = 0x6761696e, kNoiseStream = 0x6e6f6973;  // "gain", "nois"
 constexpr int kGainSinusoids = 3;
 constexpr int kRowsPerChunk = 8;  // ~100 chunks an image: both threads stay busy to the last row
-
-using Clock = std::chrono::steady_clock;
-double seconds(Clock::time_point from, Clock::time_point to) {
-  return std::chrono::duration<double>(to - from).count();
-}
 
 }  // namespace
 
@@ -57,11 +52,11 @@ double ImageRenderer::gain(double time_s, int cameraIndex) const {
 }
 
 cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d& cameraFromWorld) const {
-  const auto start = Clock::now();
+  Stopwatch phase;
   const SurfaceView view(terrain_, camera, cameraFromWorld, options_.threads);
-  const auto viewed = Clock::now();
+  times_.view_s += phase.lap();
   texture_.prepare(view.regions(), options_.threads);
-  const auto prepared = Clock::now();
+  times_.texture_s += phase.lap();
   cv::Mat scene(camera.height, camera.width, CV_32FC1);
   const int chunks = (camera.height + kRowsPerChunk - 1) / kRowsPerChunk;
   poolFor(0, chunks, options_.threads, [&](int chunk) {
@@ -72,16 +67,14 @@ cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d
     }
   });
   ++times_.images;
-  times_.view_s += seconds(start, viewed);
-  times_.texture_s += seconds(viewed, prepared);
-  times_.shade_s += seconds(prepared, Clock::now());
+  times_.shade_s += phase.seconds();
   return scene;
 }
 
 cv::Mat ImageRenderer::render(const Camera& camera, const Eigen::Isometry3d& cameraFromWorld, double time_s, int frame,
                               int cameraIndex) const {
   cv::Mat image = renderScene(camera, cameraFromWorld);
-  const auto start = Clock::now();
+  const Stopwatch start;
   image *= gain(time_s, cameraIndex);
   if (options_.vignetting > 0.0) vignette(camera, image);
   if (options_.blurSigma_px > 0.0) cv::GaussianBlur(image, image, cv::Size(0, 0), options_.blurSigma_px);
@@ -99,7 +92,7 @@ cv::Mat ImageRenderer::render(const Camera& camera, const Eigen::Isometry3d& cam
                          static_cast<std::uint64_t>(v) * static_cast<std::uint64_t>(image.cols));
     image.rowRange(rows).convertTo(out.rowRange(rows), CV_8UC1);  // rounds and saturates to 0..255
   });
-  times_.sensor_s += seconds(start, Clock::now());
+  times_.sensor_s += start.seconds();
   return out;
 }
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "lrsvo/graph/error.h"
-#include "lrsvo/sim/seed_mix.h"
+#include "lrsvo/graph/seed_mix.h"
 
 namespace lrsvo {
 namespace {

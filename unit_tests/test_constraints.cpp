@@ -329,9 +329,11 @@ TEST(Constraints, StartOutsideTheBoxIsAnErrorOrProjected) {
   WindowProblemOptions window = windowFor(Size::kSmall, Box::kActive);
   SolverOptions noIterations = tightOptions();
   noIterations.maxIterations = 0;  // LM stops at the (projected) start
-  ConstraintSettings project = projectingSettings();
-  project.nloptMaxEvaluations = 50;  // NLopt ignores maxIterations; only the box matters here
-  project.nloptMaxRounds = 1;
+  const ConstraintSettings project = projectingSettings();
+  // NLopt ignores maxIterations: a short run, as only the box matters here.
+  const auto specification = [](const std::string& method) {
+    return method.rfind("nlopt_", 0) == 0 ? method + ":evaluations=50,rounds=1" : method;
+  };
   for (const std::string& method : boundedMethods()) {
     SCOPED_TRACE(method);
     WindowProblem problem = makeWindowProblem(window);
@@ -343,7 +345,7 @@ TEST(Constraints, StartOutsideTheBoxIsAnErrorOrProjected) {
     } catch (const Error& error) {
       EXPECT_NE(std::string(error.what()).find("outside the bounds"), std::string::npos) << error.what();
     }
-    optimizeWithBounds(problem.graph, noIterations, problem.extrinsicBounds, method, project);
+    optimizeWithBounds(problem.graph, noIterations, problem.extrinsicBounds, specification(method), project);
     EXPECT_TRUE(problem.extrinsicBounds.hold());
     if (method == "gradient_projection") {
       EXPECT_EQ(Bounds::value(roll), roll.upper) << "projected onto the bound";
@@ -388,11 +390,8 @@ TEST(Constraints, BoundsOnAPoseAreRejected) {
 // at a fixed small mu.
 TEST(Constraints, LogBarrierNeverAcceptsACostIncrease) {
   WindowProblem problem = makeWindowProblem(windowFor(Size::kSmall, Box::kActive));
-  ConstraintSettings settings;
-  settings.barrierMu = 1e-4;
-  settings.barrierRounds = 1;
   const SolverSummary summary =
-      optimizeWithBounds(problem.graph, tightOptions(), problem.extrinsicBounds, "log_barrier", settings);
+      optimizeWithBounds(problem.graph, tightOptions(), problem.extrinsicBounds, "log_barrier:mu=1e-4,rounds=1");
   EXPECT_GT(summary.unsuccessfulSteps, 0) << "no step ever left the box: the test shows nothing";
   EXPECT_TRUE(costsNeverRise(summary));
   EXPECT_TRUE(problem.extrinsicBounds.hold());
@@ -412,6 +411,70 @@ TEST(Constraints, LogBarrierRoundsContinueFromAnIterateNearAnActiveBound) {
   EXPECT_TRUE(problem.extrinsicBounds.hold());
   EXPECT_TRUE(costsNeverRise(summary));
   EXPECT_TRUE(costsNeverRise(solution("log_barrier", Box::kActive).summary)) << "kProject, VO window";
+}
+
+}  // namespace
+}  // namespace lrsvo
+
+namespace lrsvo {
+namespace {
+
+std::string errorOf(const std::string& specification) {
+  try {
+    (void)makeConstraintMethod(specification);
+  } catch (const Error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+std::map<std::string, std::string> settingsOf(const ConstraintMethod& method) {
+  std::map<std::string, std::string> values;
+  for (const MethodSetting& setting : method.ownSettings()) values[setting.name] = setting.valueText();
+  return values;
+}
+
+TEST(ConstraintSpecification, NamesAMethodAndAnyOfItsOwnSettings) {
+  EXPECT_EQ(settingsOf(*makeConstraintMethod("log_barrier")),
+            (std::map<std::string, std::string>{{"decrease", "0.1"}, {"mu", "0.01"}, {"rounds", "3"}}));
+  EXPECT_EQ(settingsOf(*makeConstraintMethod("log_barrier:mu=1e-4,rounds=1")),
+            (std::map<std::string, std::string>{{"decrease", "0.1"}, {"mu", "1e-04"}, {"rounds", "1"}}));
+  EXPECT_EQ(settingsOf(*makeConstraintMethod("nlopt_mma:evaluations=50")),
+            (std::map<std::string, std::string>{{"evaluations", "50"}, {"rounds", "20"}}));
+  EXPECT_TRUE(makeConstraintMethod("gradient_projection")->ownSettings().empty());
+  EXPECT_EQ(constraintMethodName("log_barrier:rounds=1"), "log_barrier");
+}
+
+TEST(ConstraintSpecification, ErrorsNameTheSpecificationAndTheMethodsSettings) {
+  const std::string unknownSetting = errorOf("log_barrier:mu=0.1,rnds=2");
+  for (const char* part : {"log_barrier:mu=0.1,rnds=2", "'rnds'", "mu", "decrease", "rounds"})
+    EXPECT_NE(unknownSetting.find(part), std::string::npos) << unknownSetting;
+  EXPECT_NE(errorOf("log_barrier:rounds=2.5").find("integer"), std::string::npos);
+  EXPECT_NE(errorOf("log_barrier:mu=nan").find("finite number"), std::string::npos);
+  EXPECT_NE(errorOf("log_barrier:mu=").find("finite number"), std::string::npos);
+  EXPECT_NE(errorOf("log_barrier:mu").find("setting=value"), std::string::npos);
+  EXPECT_NE(errorOf("log_barrier:").find("setting=value"), std::string::npos);
+  EXPECT_NE(errorOf("none:rounds=1").find("no settings"), std::string::npos);
+  const std::string unknownMethod = errorOf("log_barier:mu=1");
+  EXPECT_NE(unknownMethod.find("log_barier"), std::string::npos) << unknownMethod;
+  EXPECT_NE(unknownMethod.find("gradient_projection"), std::string::npos) << "the known methods";
+}
+
+// The barrier's minimiser lies where the cost's gradient g balances the
+// barrier's, about mu / gap near a bound: the gap grows with mu, so six orders
+// of magnitude of mu must show in the gap of an active bound.
+TEST(ConstraintSpecification, TheBarriersSettingsReachItsSolve) {
+  double gap[2] = {0.0, 0.0};
+  const char* specifications[2] = {"log_barrier:mu=1,rounds=1", "log_barrier:mu=1e-6,rounds=1"};
+  for (int k = 0; k < 2; ++k) {
+    WindowProblem problem = makeWindowProblem(windowFor(Size::kSmall, Box::kActive));
+    optimizeWithBounds(problem.graph, tightOptions(), problem.extrinsicBounds, specifications[k]);
+    const Bounds::Bound roll = problem.extrinsicBounds.all()[3];
+    gap[k] = (roll.upper - Bounds::value(roll)) / roll.halfWidth();
+  }
+  std::printf("  roll's gap to its bound in half-widths: mu 1: %.3e, mu 1e-6: %.3e\n", gap[0], gap[1]);
+  EXPECT_GT(gap[1], 0.0);
+  EXPECT_GT(gap[0], 10.0 * gap[1]);
 }
 
 }  // namespace

@@ -56,10 +56,10 @@ TEST(Optimizer, LevenbergMarquardtNeverRaisesTheCost) {
       for (const char* kernel : {"", "Huber", "Cauchy", "Tukey", "cycle"}) {
         Graph graph = makeToyProblem(noisyProblem(seed, kernel));
         SolverOptions options;
-        options.damping = damping;
+        options.lm.damping = damping;
         // Tiny start lambdas: over-long steps are tried and rejected, which
         // exercises restoring the estimates.
-        options.initialLambda = damping == Damping::kAdditive ? 1e-6 : 1e-8;
+        options.lm.initialLambda = damping == Damping::kAdditive ? 1e-6 : 1e-8;
         const SolverSummary summary = Optimizer(options).optimize(graph);
         SCOPED_TRACE(std::string("seed ") + std::to_string(seed) + ", kernel '" + kernel + "', " +
                      (damping == Damping::kAdditive ? "additive" : "multiplicative"));
@@ -218,7 +218,7 @@ TEST(Optimizer, SummaryRecordsAreConsistent) {
     Graph graph = makeToyProblem(noisyProblem(9, "Cauchy"));
     SolverOptions options;
     options.algorithm = algorithm;
-    options.initialLambda = 1e-9;  // provokes rejected LM steps
+    options.lm.initialLambda = 1e-9;  // provokes rejected LM steps
     const SolverSummary summary = Optimizer(options).optimize(graph);
     SCOPED_TRACE(algorithm);
     ASSERT_GE(summary.iterationCount(), 2) << summary.fullReport();

@@ -1,7 +1,5 @@
 #pragma once
 
-#include <chrono>
-#include <ctime>
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -11,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lrsvo/graph/solver_summary.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace CLI {
 class App;
@@ -21,19 +20,6 @@ namespace lrsvo::bench {
 // The `bench` subcommand of the lrsvo program, created by whichever
 // benchmark registers first; each benchmark adds itself under it.
 CLI::App& benchSubcommand(CLI::App& app);
-
-// Wall-clock and process CPU seconds since construction. CPU time (all
-// threads) helps read wall times taken on a busy machine.
-class Stopwatch {
- public:
-  double seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-  double cpuSeconds() const { return static_cast<double>(std::clock() - cpuStart_) / CLOCKS_PER_SEC; }
-
- private:
-  using Clock = std::chrono::steady_clock;
-  Clock::time_point start_ = Clock::now();
-  std::clock_t cpuStart_ = std::clock();
-};
 
 // What one solve reports, whichever library ran it. Phase times follow each
 // library's own accounting (see docs/benchmarks.md).

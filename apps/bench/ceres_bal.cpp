@@ -68,7 +68,7 @@ ceres::Solver::Options solverOptions(const SolverOptions& stopping, ceres::Linea
   options.use_inner_iterations = false;
   options.jacobi_scaling = true;
   // Ceres' LM damping is 1 / radius; both start at the same lambda.
-  options.initial_trust_region_radius = 1.0 / (stopping.initialLambda > 0 ? stopping.initialLambda : 1e-4);
+  options.initial_trust_region_radius = 1.0 / (stopping.lm.initialLambda > 0 ? stopping.lm.initialLambda : 1e-4);
   options.function_tolerance = stopping.functionTolerance;
   options.gradient_tolerance = stopping.gradientTolerance;
   options.parameter_tolerance = stopping.parameterTolerance;

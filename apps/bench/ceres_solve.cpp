@@ -33,7 +33,7 @@ ceres::Solver::Options ceresSolverOptions(const SolverOptions& stopping, ceres::
   options.dense_linear_algebra_library_type = ceres::EIGEN;  // Ceres' default
   options.use_inner_iterations = false;
   options.jacobi_scaling = true;
-  options.initial_trust_region_radius = 1.0 / (stopping.initialLambda > 0 ? stopping.initialLambda : 1e-4);
+  options.initial_trust_region_radius = 1.0 / (stopping.lm.initialLambda > 0 ? stopping.lm.initialLambda : 1e-4);
   options.function_tolerance = stopping.functionTolerance;
   options.gradient_tolerance = stopping.gradientTolerance;
   options.parameter_tolerance = stopping.parameterTolerance;

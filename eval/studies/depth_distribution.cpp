@@ -15,6 +15,7 @@
 #include "lrsvo/eval/studies/study_support.h"
 #include "lrsvo/eval/study.h"
 #include "lrsvo/eval/triangulation_trials.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 namespace {
@@ -34,7 +35,7 @@ struct Shape {
 
 StudyReport runDepthDistribution(const StudyOptions& options) {
   using study_support::format;
-  const study_support::Stopwatch stopwatch;
+  const Stopwatch stopwatch;
   StudyReport report("depth-distribution", "Fig. 7",
                      "Distribution of the triangulated depth from 2 to 5 cameras in a line");
   const long trials = options.trialsOr(kPaperTrials);

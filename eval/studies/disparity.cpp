@@ -9,6 +9,7 @@
 #include "lrsvo/eval/studies/paper_studies.h"
 #include "lrsvo/eval/studies/study_support.h"
 #include "lrsvo/eval/study.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 namespace {
@@ -21,7 +22,7 @@ constexpr double kCheckBaseline_m = 0.7, kCheckDepth_m = 100.0;
 
 StudyReport runDisparity(const StudyOptions& options) {
   using study_support::format;
-  const study_support::Stopwatch stopwatch;
+  const Stopwatch stopwatch;
   StudyReport report("disparity", "Fig. 1", "Disparity and depth resolution of a perfect stereo pair against depth");
   const double fFigure = kFigure1Focal_px, fOptics = paperOpticsFocal_px();
   StudyTable& table =

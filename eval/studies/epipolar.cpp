@@ -9,6 +9,7 @@
 #include "lrsvo/eval/studies/section2_setup.h"
 #include "lrsvo/eval/studies/study_support.h"
 #include "lrsvo/eval/study.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 namespace {
@@ -21,7 +22,7 @@ double epipolarError(double focal_px, const Deformation& deformation) {
 
 StudyReport runEpipolar(const StudyOptions& options) {
   using study_support::format;
-  const study_support::Stopwatch stopwatch;
+  const Stopwatch stopwatch;
   StudyReport report("epipolar", "Fig. 4", "Epipolar error of a deformed, vertically aligned stereo pair");
   const double fOptics = paperOpticsFocal_px(), fImplied = kImpliedFocal_px;
   StudyTable& table = report.addTable(

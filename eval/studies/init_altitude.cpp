@@ -16,6 +16,7 @@
 #include "lrsvo/eval/study.h"
 #include "lrsvo/frontend/odometry/long_range_initializer.h"
 #include "lrsvo/frontend/odometry/rigid_stereo_initializer.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 namespace {
@@ -99,7 +100,7 @@ AltitudeSummary summarise(const std::vector<const Trial*>& trials) {
 
 StudyReport runInitAltitude(const StudyOptions& options) {
   using study_support::format;
-  const study_support::Stopwatch stopwatch;
+  const Stopwatch stopwatch;
   StudyReport report("init-altitude", "Fig. 17",
                      "Final position error of the long-range and the rigid-stereo initialisation vs altitude");
   const int trials = options.trialsOr(kPaperTrials);

@@ -16,6 +16,7 @@
 #include "lrsvo/eval/studies/study_support.h"
 #include "lrsvo/eval/study.h"
 #include "lrsvo/frontend/odometry/long_range_initializer.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 namespace {
@@ -39,7 +40,7 @@ constexpr Variant kVariants[] = {{"with-kappa", true}, {"without-kappa", false}}
 
 StudyReport runInitScale(const StudyOptions& options) {
   using study_support::format;
-  const study_support::Stopwatch stopwatch;
+  const Stopwatch stopwatch;
   StudyReport report("init-scale", "Fig. 18", "Initialisation from a wrong start scale, with and without kappa");
   const int trials = options.trialsOr(kPaperTrials);
   InitializationFlight flight;

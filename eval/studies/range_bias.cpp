@@ -14,6 +14,7 @@
 #include "lrsvo/eval/studies/study_support.h"
 #include "lrsvo/eval/study.h"
 #include "lrsvo/eval/triangulation_trials.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 namespace {
@@ -40,7 +41,7 @@ struct CaseResult {
 
 StudyReport runRangeBias(const StudyOptions& options) {
   using study_support::format;
-  const study_support::Stopwatch stopwatch;
+  const Stopwatch stopwatch;
   StudyReport report("range-bias", "Fig. 6", "Range bias of triangulation from 2, 3 and 4 cameras in a line");
   const long trials = options.trialsOr(kPaperTrials);
   const double focalLengths_px[] = {paperOpticsFocal_px(), kImpliedFocal_px};

@@ -2,7 +2,6 @@
 
 // Small helpers the paper's studies share (eval/studies/*.cpp).
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -20,14 +19,5 @@ std::string format(const char* pattern, Args... args) {
   std::snprintf(text.data(), text.size() + 1, pattern, args...);
   return text;
 }
-
-// Wall-clock seconds since construction: a study's run time.
-class Stopwatch {
- public:
-  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
-
- private:
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
 
 }  // namespace lrsvo::study_support

@@ -9,6 +9,7 @@
 #include "lrsvo/eval/studies/section2_setup.h"
 #include "lrsvo/eval/studies/study_support.h"
 #include "lrsvo/eval/study.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 namespace {
@@ -19,7 +20,7 @@ std::string number(double value) { return std::isfinite(value) ? study_support::
 
 StudyReport runTriangulation(const StudyOptions& options) {
   using study_support::format;
-  const study_support::Stopwatch stopwatch;
+  const Stopwatch stopwatch;
   StudyReport report("triangulation", "Fig. 5", "Triangulation error of a deformed, vertically aligned stereo pair");
   const double fOptics = paperOpticsFocal_px(), fImplied = kImpliedFocal_px;
   StudyTable& table =

@@ -1,7 +1,6 @@
 #include "lrsvo/frontend/features/feature_tracker.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <unordered_set>
@@ -10,13 +9,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 namespace {
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 std::vector<cv::Point2f> pixelsOf(const std::vector<Track>& tracks) {
   std::vector<cv::Point2f> pixels;
@@ -64,27 +60,27 @@ const std::vector<Track>& FeatureTracker::track(const KltImage& image, double ti
   for (Track& t : tracks_) ++t.age;
   if (broken_ && time_s - broken_->time_s > options_.reviveWithin_s) broken_.reset();
   if (detector_.hasDescriptors()) {
-    const auto detectStart = std::chrono::steady_clock::now();
+    const Stopwatch detectStart;
     DetectedFeatures candidates = detector_.detect(image.image, {}, 2 * options_.targetFeatures);
-    statistics_.detect_ms = millisecondsSince(detectStart);
-    const auto trackStart = std::chrono::steady_clock::now();
+    statistics_.detect_ms = detectStart.milliseconds();
+    const Stopwatch trackStart;
     followByDescriptor(candidates);
-    statistics_.track_ms = millisecondsSince(trackStart);
+    statistics_.track_ms = trackStart.milliseconds();
     statistics_.tracked = static_cast<int>(tracks_.size());
     addNew(std::move(candidates), options_.targetFeatures - statistics_.tracked);
   } else {
-    const auto trackStart = std::chrono::steady_clock::now();
+    const Stopwatch trackStart;
     const double mean = cv::mean(image.image)[0];
     followByKlt(image, mean);
     if (broken_) revive(image, mean);
     previousMean_ = mean;
-    statistics_.track_ms = millisecondsSince(trackStart);
+    statistics_.track_ms = trackStart.milliseconds();
     statistics_.tracked = static_cast<int>(tracks_.size());
     const int wanted = options_.targetFeatures - statistics_.tracked;
     if (wanted > 0 && wanted >= options_.topUpFraction * options_.targetFeatures) {
-      const auto detectStart = std::chrono::steady_clock::now();
+      const Stopwatch detectStart;
       addNew(detector_.detect(image.image, pixelsOf(tracks_), wanted), wanted);
-      statistics_.detect_ms = millisecondsSince(detectStart);
+      statistics_.detect_ms = detectStart.milliseconds();
     }
   }
   previous_ = image;

@@ -1,25 +1,15 @@
 #include "lrsvo/frontend/features/image_front_end.h"
 
 #include <algorithm>
-#include <chrono>
 #include <string>
 #include <unordered_set>
 
 #include "lrsvo/frontend/features/frame_check.h"
 #include "lrsvo/frontend/features/fundamental_check.h"
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-}  // namespace
-
 ImageFrontEnd::ImageFrontEnd(const Rig& rig, const std::vector<LensDistortion>& distortion,
                              const ImageFrontEndOptions& options)
     : rig_(rig),
@@ -80,9 +70,9 @@ FrameObservations ImageFrontEnd::track(const StereoFrame& frame) {
   const cv::Mat& baseImage = frame.image(0);
   checkImage(frame.index, 0, baseImage);
   timings_ = {};
-  const Clock::time_point start = Clock::now();
+  const Stopwatch start;
   base_ = makeKltImage(baseImage, pyramid_);
-  const double pyramid_ms = millisecondsSince(start);
+  const double pyramid_ms = start.milliseconds();
   tracker_.track(base_, frame.time_s);
   const TrackerStatistics& statistics = tracker_.lastStatistics();
   timings_.detect_ms = statistics.detect_ms;
@@ -91,19 +81,19 @@ FrameObservations ImageFrontEnd::track(const StereoFrame& frame) {
   timings_.realigned = statistics.realigned;
   timings_.revived = statistics.revived;
 
-  Clock::time_point stage = Clock::now();
+  Stopwatch stage;
   raw_.clear();
   for (const Track& t : tracker_.tracks()) raw_.push_back(t.pixel);
   pixels_ = baseUndistorter_.undistort(raw_);
-  timings_.undistort_ms = millisecondsSince(stage);
+  timings_.undistort_ms = stage.milliseconds();
 
-  stage = Clock::now();
+  stage.restart();
   if (options_.fundamentalCheck && (timings_.rejected = rejectOutliers(tracker_.tracks(), pixels_)) > 0) {
     raw_.clear();
     for (const Track& t : tracker_.tracks()) raw_.push_back(t.pixel);
     pixels_ = baseUndistorter_.undistort(raw_);
   }
-  timings_.track_ms += millisecondsSince(stage);
+  timings_.track_ms += stage.milliseconds();
   const std::vector<Track>& tracks = tracker_.tracks();
   timings_.tracked = static_cast<int>(tracks.size()) - timings_.added;
 
@@ -118,14 +108,14 @@ FrameObservations ImageFrontEnd::track(const StereoFrame& frame) {
   }
   trackedFrame_ = frame;  // shares the images (and any deferred ones) with the caller's frame
   matched_ = false;
-  timings_.total_ms = millisecondsSince(start);
+  timings_.total_ms = start.milliseconds();
   return observations;
 }
 
 std::vector<Observation> ImageFrontEnd::matchAcrossRig() {
   if (matched_) throw Error("image front end: matchAcrossRig() runs once per tracked frame, after track()");
   matched_ = true;
-  const Clock::time_point start = Clock::now();
+  const Stopwatch start;
   std::vector<Observation> observations;
   std::unordered_set<int> matchedSomewhere;
   for (std::size_t k = 0; k < matchers_.size(); ++k) {
@@ -140,7 +130,7 @@ std::vector<Observation> ImageFrontEnd::matchAcrossRig() {
     }
   }
   trackedFrame_ = {};
-  timings_.stereo_ms = millisecondsSince(start);
+  timings_.stereo_ms = start.milliseconds();
   timings_.total_ms += timings_.stereo_ms;
   timings_.stereoMatched = static_cast<int>(matchedSomewhere.size());
   return observations;

@@ -25,9 +25,12 @@ void validate(const LongRangeInitializerOptions& o) {
   if (o.frames < 3) throw Error("long-range initialiser: needs at least 3 frames, got " + std::to_string(o.frames));
   if (!(o.initialBaseline > 0.0) || !(o.initialKappa > 0.0))
     throw Error("long-range initialiser: initialBaseline and initialKappa must be positive");
-  if (!Registry<ConstraintMethod>::instance().contains(o.constraintMethod))
-    throw Error("long-range initialiser: unknown constraint method '" + o.constraintMethod + "'");
-  SolverOptions::fromName(o.solver);  // throws on an unknown name
+  try {
+    (void)makeConstraintMethod(o.constraintMethod);
+  } catch (const Error& e) {
+    throw Error("long-range initialiser: " + std::string(e.what()));
+  }
+  o.solver.validate();
 }
 
 // The relative standard deviation of the metric scale, as that of the metric
@@ -62,7 +65,8 @@ InitializationResult LongRangeInitializer::initialize(const Rig& rig,
   MonocularOptions monocularOptions = o.monocular;
   monocularOptions.frames = o.frames;
   monocularOptions.initialBaseline = o.initialBaseline;
-  monocularOptions.solver = o.solver;
+  monocularOptions.solver.algorithm = o.solver.algorithm;
+  monocularOptions.solver.linearSolver = o.solver.linearSolver;
   monocularOptions.bundle = o.bundle;
   monocularOptions.seed = o.seed;
   const std::vector<MonocularResult> maps = buildMonocularMaps(rig, frames, monocularOptions);
@@ -95,9 +99,7 @@ InitializationResult LongRangeInitializer::addSecondaryCameras(const Rig& rig,
   }
   for (int i = 0; i < o.frames; ++i) bundle.addObservations(i, frames[i]);
   const Bounds bounds = bundle.extrinsicBounds();
-  SolverOptions solver = SolverOptions::fromName(o.solver);
-  solver.maxIterations = o.maxIterations;
-  result.summary = optimizeWithBounds(bundle.graph(), solver, bounds, o.constraintMethod, o.constraintSettings);
+  result.summary = optimizeWithBounds(bundle.graph(), o.solver, bounds, o.constraintMethod, o.constraintSettings);
   result.rmsReprojectionError_px = bundle.rmsReprojectionError_px();
   result.extrinsics = bundle.extrinsics();
 

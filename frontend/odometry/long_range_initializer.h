@@ -10,15 +10,17 @@
 #include "lrsvo/frontend/odometry/monocular_initializer.h"
 #include "lrsvo/frontend/odometry/observations.h"
 #include "lrsvo/frontend/odometry/rig.h"
+#include "lrsvo/graph/solver_options.h"
 
 namespace lrsvo {
 
 struct LongRangeInitializerOptions {
   int frames = 10;                               // base frames from the first (paper: 10)
-  std::string constraintMethod = "log_barrier";  // any name of Registry<ConstraintMethod>
+  std::string constraintMethod = "log_barrier";  // "name[:setting=value,...]" (makeConstraintMethod)
   ConstraintSettings constraintSettings;
-  std::string solver = "lm_schur_dense";
-  int maxIterations = 100;  // of the batch adjustment (per barrier round)
+  // The batch adjustment (its iteration cap per barrier round); the monocular
+  // start uses the same algorithm and linear solver.
+  SolverOptions solver{.linearSolver = "schur_dense", .lm = {}, .maxIterations = 100};
   // true: kappa joins every secondary projection (the paper's method);
   // false: control (b), the same batch without kappa, so the map itself must
   // move to the metric scale.

@@ -45,9 +45,7 @@ double bundleAdjust(SparseMap& map, const std::vector<int>& order, const Rig& ri
   bundle.holdDistance(0, 1);
   for (std::size_t i = 0; i < map.cameraFromWorld.size(); ++i)
     bundle.addObservations(static_cast<int>(i), frames[order[i]]);
-  SolverOptions solver = SolverOptions::fromName(options.solver);
-  solver.maxIterations = options.maxIterations;
-  summary = Optimizer(solver).optimize(bundle.graph());
+  summary = Optimizer(options.solver).optimize(bundle.graph());
   map = bundle.map();
   return bundle.rmsReprojectionError_px();
 }

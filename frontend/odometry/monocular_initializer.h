@@ -11,6 +11,7 @@
 #include "lrsvo/frontend/odometry/sparse_map.h"
 #include "lrsvo/frontend/odometry/triangulation.h"
 #include "lrsvo/frontend/odometry/two_view.h"
+#include "lrsvo/graph/solver_options.h"
 #include "lrsvo/graph/solver_summary.h"
 
 namespace lrsvo {
@@ -33,8 +34,7 @@ struct MonocularOptions {
   // it was seen over) and an RMS reprojection error of at most 3 px.
   TriangulationOptions triangulation{.maxIterations = 10, .minParallax_rad = 2e-3, .maxReprojectionError_px = 3.0};
   BundleGraphOptions bundle;
-  std::string solver = "lm_schur_dense";
-  int maxIterations = 50;  // per bundle adjustment
+  SolverOptions solver{.linearSolver = "schur_dense", .lm = {}, .maxIterations = 50};  // each bundle adjustment
   std::uint64_t seed = 1;
 };
 

@@ -1,18 +1,14 @@
 #include "lrsvo/frontend/odometry/odometry.h"
 
-#include <chrono>
 #include <cstdio>
 #include <utility>
 
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/registry.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 namespace {
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 int baseObservationCount(const FrameObservations& frame) {
   int count = 0;
@@ -127,7 +123,7 @@ FrameEstimate Odometry::untracked(const FrameObservations& frame, int index) con
 }
 
 std::vector<FrameEstimate> Odometry::initialize() {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch start;
   std::vector<FrameObservations> sampled;
   for (std::size_t position : samples_) sampled.push_back(pending_[position]);
   LongRangeInitializerOptions initializerOptions = options_.initializer;
@@ -146,7 +142,7 @@ std::vector<FrameEstimate> Odometry::initialize() {
     pendingIndices_.erase(pendingIndices_.begin(), pendingIndices_.begin() + static_cast<std::ptrdiff_t>(givenUp));
     samples_.erase(samples_.begin());
     for (std::size_t& position : samples_) position -= givenUp;
-    estimates.front().times.initialize_ms = millisecondsSince(start);
+    estimates.front().times.initialize_ms = start.milliseconds();
     return estimates;
   }
 
@@ -162,7 +158,7 @@ std::vector<FrameEstimate> Odometry::initialize() {
   window_.reset(keyframes, std::move(points), result.extrinsics, result.kappaRelativeStd);
   ++segment_;
   tracking_ = true;
-  const double initialize_ms = millisecondsSince(start);
+  const double initialize_ms = start.milliseconds();
 
   for (std::size_t i = 0, sample = 0; i < pending_.size(); ++i) {
     FrameEstimate estimate;
@@ -197,7 +193,7 @@ std::vector<FrameEstimate> Odometry::initialize() {
 }
 
 FrameEstimate Odometry::startFromStereo(const FrameObservations& frame, int index, const StereoStart& start) {
-  const auto begin = std::chrono::steady_clock::now();
+  const Stopwatch begin;
   // The new segment's world is this camera; place it where the last segment's motion, carried on, puts it.
   const Eigen::Isometry3d worldFromSegment = segmentPlacement(frame.time_s);
   std::map<int, Eigen::Vector3d> points;
@@ -215,7 +211,7 @@ FrameEstimate Odometry::startFromStereo(const FrameObservations& frame, int inde
   estimate.extrinsics = window_.extrinsicsAt(frame.time_s);
   estimate.mapPoints = static_cast<int>(window_.points().size());
   estimate.windowFrames = 1;
-  estimate.times.initialize_ms = millisecondsSince(begin);
+  estimate.times.initialize_ms = begin.milliseconds();
   return estimate;
 }
 
@@ -254,10 +250,10 @@ bool Odometry::estimateFramePose(const FrameObservations& frame, int index, Eige
 
 FrameEstimate Odometry::track(const FrameObservations& frame, int index, const SecondaryObservations& secondary) {
   FrameEstimate estimate = untracked(frame, index);
-  auto start = std::chrono::steady_clock::now();
+  Stopwatch start;
   Eigen::Isometry3d pose;
   const bool posed = estimateFramePose(frame, index, pose, estimate);
-  estimate.times.pose_ms = millisecondsSince(start);
+  estimate.times.pose_ms = start.milliseconds();
   if (!posed) {
     tracking_ = false;
     return estimate;
@@ -268,13 +264,13 @@ FrameEstimate Odometry::track(const FrameObservations& frame, int index, const S
   if (keyframePolicy_.isKeyframe(last.observations, frame)) {
     estimate.keyframe = true;
     window_.addKeyframe({index, pose, withSecondary(frame, secondary)});
-    start = std::chrono::steady_clock::now();
+    start.restart();
     window_.triangulateNewTracks();
-    estimate.times.triangulate_ms = millisecondsSince(start);
-    start = std::chrono::steady_clock::now();
+    estimate.times.triangulate_ms = start.milliseconds();
+    start.restart();
     const WindowAdjustment adjustment = window_.adjust();
     window_.retire();
-    estimate.times.bundle_ms = millisecondsSince(start);
+    estimate.times.bundle_ms = start.milliseconds();
     estimate.windowRmsError_px = adjustment.rmsError_px;
     estimate.outlierThreshold_px = adjustment.outlierThreshold_px;
     estimate.bundleIterations = adjustment.summary.iterationCount();

@@ -36,7 +36,7 @@ void OdometryOptions::validate() const {
   require(extrinsicRateSigma >= 0.0 && std::isfinite(extrinsicRateSigma),
           "extrinsicRateSigma must be finite and not negative");
   require(initializer.frames <= windowSize, "the initialiser's frames must fit the window");
-  require(maxIterations >= 1, "maxIterations must be positive");
+  require(solver.maxIterations >= 1, "solver.maxIterations must be positive");
   lrsvo::validate(outliers);
   require(minTriangulationViews >= 2, "minTriangulationViews must be at least 2");
   require(minPoseInliers >= 4, "minPoseInliers must be at least 4");
@@ -47,9 +47,12 @@ void OdometryOptions::validate() const {
   stereoStart.validate();
   require(keyframes.maxInterval_s > 0.0 && std::isfinite(keyframes.maxInterval_s),
           "keyframes.maxInterval_s must be finite and > 0");
-  require(Registry<ConstraintMethod>::instance().contains(constraintMethod),
-          "unknown constraint method '" + constraintMethod + "'");
-  SolverOptions::fromName(solver);  // throws on an unknown name
+  try {
+    (void)makeConstraintMethod(constraintMethod);
+  } catch (const Error& e) {
+    require(false, e.what());
+  }
+  solver.validate();
 }
 
 }  // namespace lrsvo

@@ -11,6 +11,7 @@
 #include "lrsvo/frontend/odometry/pose_estimator.h"
 #include "lrsvo/frontend/odometry/stereo_start.h"
 #include "lrsvo/frontend/odometry/triangulation.h"
+#include "lrsvo/graph/solver_options.h"
 
 namespace lrsvo {
 
@@ -55,15 +56,17 @@ struct OdometryOptions {
   // 0: one constant S per window (the paper's model).
   double extrinsicRateSigma = 1.0;
   ExtrinsicMode extrinsicMode = ExtrinsicMode::kBounded;
-  std::string constraintMethod = "log_barrier";  // any name of Registry<ConstraintMethod>, for kBounded
+  // The window's constraint method as "name[:setting=value,...]" (makeConstraintMethod), for kBounded: one
+  // barrier round per solve, as each window starts from the last one's iterate.
+  std::string constraintMethod = "log_barrier:rounds=1";
   // One barrier round: each window starts from the last window's S, already
   // strictly inside and near its optimum, so the interior-point schedule of a
   // cold start (mu decreased over rounds) would only repeat the solve.
-  ConstraintSettings constraintSettings{.start = StartPolicy::kProject, .barrierRounds = 1};
-  std::string solver = "lm_schur_dense";
-  int maxIterations = 10;           // per window adjustment; warm-started, it rarely needs more
-  double functionTolerance = 1e-5;  // stop when the cost changes by less than this fraction
-  int threads = 1;                  // of the solver's linearisation and Schur complement
+  ConstraintSettings constraintSettings{.start = StartPolicy::kProject};
+  // Each window adjustment: warm-started, it rarely needs more than 10 iterations; it stops
+  // when the cost changes by less than 1e-5 of itself. Threads: of the linearisation and
+  // the Schur complement.
+  SolverOptions solver{.linearSolver = "schur_dense", .lm = {}, .maxIterations = 10, .functionTolerance = 1e-5};
   BundleGraphOptions bundle;
   // After each window adjustment, an observation whose reprojection error
   // exceeds the window's threshold (outlier_threshold.h: 4 sigma of the

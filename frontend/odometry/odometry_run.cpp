@@ -1,7 +1,6 @@
 #include "lrsvo/frontend/odometry/odometry_run.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <ostream>
 #include <string>
@@ -10,13 +9,10 @@
 #include "lrsvo/frontend/odometry/odometry.h"
 #include "lrsvo/frontend/odometry/run_writer.h"
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 void addTimings(FrontEndTimings& sum, const FrontEndTimings& t) {
   sum.detect_ms += t.detect_ms;
@@ -76,17 +72,17 @@ OdometryPipeline::~OdometryPipeline() = default;
 void OdometryPipeline::process(const StereoFrame& frame) {
   const std::string defect = frameDefect(frame, rig_);
   if (!defect.empty()) return skipBadFrame(frame, defect);
-  const auto start = Clock::now();
+  const Stopwatch start;
   const FrameObservations observations = frontEnd_->track(frame);
-  result_.totals.frontEndSeconds += secondsSince(start);
+  result_.totals.frontEndSeconds += start.seconds();
   // Stereo matching runs only for the frames the odometry keeps; its time is
   // the front end's, and rendering a source's deferred images is the source's.
   double stereoSeconds = 0.0, deferredSeconds = 0.0;
   run(observations, frontEnd_->lastTimings(), [&] {
-    const auto produceStart = Clock::now();
+    const Stopwatch produceStart;
     for (int k = 1; k < frame.cameraCount(); ++k) frame.image(k);
-    deferredSeconds = secondsSince(produceStart);
-    const auto matchStart = Clock::now();
+    deferredSeconds = produceStart.seconds();
+    const Stopwatch matchStart;
     // Matches are looked for around the S the odometry holds now; before it
     // has one, around the calibration, widened to the rig's bounds.
     if (odometry_->tracking())
@@ -94,7 +90,7 @@ void OdometryPipeline::process(const StereoFrame& frame) {
     else
       frontEnd_->centreBandsOnCalibration();
     std::vector<Observation> secondary = frontEnd_->matchAcrossRig();
-    stereoSeconds = secondsSince(matchStart);
+    stereoSeconds = matchStart.seconds();
     pending_.back().timings = frontEnd_->lastTimings();
     return secondary;
   });
@@ -112,10 +108,10 @@ void OdometryPipeline::run(const FrameObservations& observations, const FrontEnd
   RunTotals& totals = result_.totals;
   pending_.push_back({frontEnd, std::nullopt});
 
-  const auto start = Clock::now();
+  const Stopwatch start;
   const std::vector<FrameEstimate> estimates = odometry_->process(observations, secondary);
   frontEnd_->dropTracks(odometry_->takeRejectedTracks());
-  totals.backEndSeconds += secondsSince(start);
+  totals.backEndSeconds += start.seconds();
   ++totals.frames;
   record(estimates);
 }
@@ -189,7 +185,7 @@ std::vector<RunResult> runOdometry(FrameSource& source, const std::vector<RunOpt
   const int frameCount = framesInRun(source.frameCount(), first.firstFrame, first.maxFrames);
   source.skip(first.firstFrame);
 
-  const auto start = Clock::now();
+  const Stopwatch start;
   double sourceSeconds = 0.0;
   bool stopped = false;
   for (int frames = 0; frameCount < 0 || frames < frameCount; ++frames) {
@@ -197,15 +193,15 @@ std::vector<RunResult> runOdometry(FrameSource& source, const std::vector<RunOpt
       stopped = true;
       break;
     }
-    const auto read = Clock::now();
+    const Stopwatch read;
     std::optional<StereoFrame> frame = source.next();
-    sourceSeconds += secondsSince(read);
+    sourceSeconds += read.seconds();
     if (!frame) break;
     for (auto& pipeline : pipelines) pipeline->process(*frame);
     if (first.progress && (frames + 1) % 10 == 0)
-      showProgress(*first.progress, pipelines.front()->totals(), secondsSince(start), frameCount, false);
+      showProgress(*first.progress, pipelines.front()->totals(), start.seconds(), frameCount, false);
   }
-  if (first.progress) showProgress(*first.progress, pipelines.front()->totals(), secondsSince(start), frameCount, true);
+  if (first.progress) showProgress(*first.progress, pipelines.front()->totals(), start.seconds(), frameCount, true);
   std::vector<RunResult> results;
   for (auto& pipeline : pipelines) {
     results.push_back(pipeline->finish());
@@ -223,7 +219,7 @@ std::vector<RunResult> runOdometry(const Rig& rig, const std::vector<FrameObserv
     OdometryPipeline pipeline(rig, none, truth, options);
     const int count = framesInRun(static_cast<int>(frames.size()), options.firstFrame, options.maxFrames);
     const int first = std::min(options.firstFrame, static_cast<int>(frames.size()));
-    const auto start = Clock::now();
+    const Stopwatch start;
     bool stopped = false;
     for (int i = 0; i < count; ++i) {
       if (options.stop && options.stop->load()) {
@@ -232,9 +228,9 @@ std::vector<RunResult> runOdometry(const Rig& rig, const std::vector<FrameObserv
       }
       pipeline.process(frames[static_cast<std::size_t>(first + i)]);
       if (options.progress && (i + 1) % 100 == 0)
-        showProgress(*options.progress, pipeline.totals(), secondsSince(start), count, false);
+        showProgress(*options.progress, pipeline.totals(), start.seconds(), count, false);
     }
-    if (options.progress) showProgress(*options.progress, pipeline.totals(), secondsSince(start), count, true);
+    if (options.progress) showProgress(*options.progress, pipeline.totals(), start.seconds(), count, true);
     results.push_back(pipeline.finish());
     results.back().stopped = stopped;
     if (stopped) break;

@@ -27,7 +27,7 @@ void triangulateStereo(SparseMap& map, const Rig& rig, const FrameObservations& 
 void validate(const RigidStereoInitializerOptions& o) {
   if (o.frames < 2) throw Error("rigid stereo initialiser: needs at least 2 frames, got " + std::to_string(o.frames));
   if (o.minPoints < 4) throw Error("rigid stereo initialiser: minPoints must be at least 4 (P3P and a check)");
-  SolverOptions::fromName(o.solver);  // throws on an unknown name
+  o.solver.validate();
 }
 
 }  // namespace
@@ -82,9 +82,7 @@ InitializationResult RigidStereoInitializer::initialize(const Rig& rig,
     for (int camera = 1; camera <= rig.secondaryCount(); ++camera)
       bundle.addExtrinsic(camera, rig.extrinsics[camera - 1], true);
     for (int i = 0; i <= k; ++i) bundle.addObservations(i, frames[i]);
-    SolverOptions solver = SolverOptions::fromName(o.solver);
-    solver.maxIterations = o.maxIterations;
-    result.summary = Optimizer(solver).optimize(bundle.graph());
+    result.summary = Optimizer(o.solver).optimize(bundle.graph());
     result.rmsReprojectionError_px = bundle.rmsReprojectionError_px();
     map = bundle.map();
   }

@@ -10,6 +10,7 @@
 #include "lrsvo/frontend/odometry/pose_estimator.h"
 #include "lrsvo/frontend/odometry/rig.h"
 #include "lrsvo/frontend/odometry/triangulation.h"
+#include "lrsvo/graph/solver_options.h"
 
 namespace lrsvo {
 
@@ -21,8 +22,7 @@ struct RigidStereoInitializerOptions {
   // and an RMS reprojection error of at most 3 px in the rigid rig.
   TriangulationOptions triangulation{.maxIterations = 10, .minParallax_rad = 1e-3, .maxReprojectionError_px = 3.0};
   BundleGraphOptions bundle;
-  std::string solver = "lm_schur_dense";
-  int maxIterations = 50;  // per bundle adjustment
+  SolverOptions solver{.linearSolver = "schur_dense", .lm = {}, .maxIterations = 50};  // each bundle adjustment
   // A final RMS reprojection error (per image coordinate) above this fails:
   // a rig deformed away from its calibration shows up here.
   double maxRmsReprojectionError_px = 2.0;

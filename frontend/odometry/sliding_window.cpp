@@ -113,10 +113,7 @@ int SlidingWindow::triangulateNewTracks() {
 }
 
 SolverSummary SlidingWindow::solve(BundleGraph& bundle, const Bounds& bounds) const {
-  SolverOptions solver = SolverOptions::fromName(options_.solver);
-  solver.maxIterations = options_.maxIterations;
-  solver.functionTolerance = options_.functionTolerance;
-  solver.threads = options_.threads;
+  const SolverOptions& solver = options_.solver;
   switch (options_.extrinsicMode) {
     case ExtrinsicMode::kBounded:
       return optimizeWithBounds(bundle.graph(), solver, bounds, options_.constraintMethod, options_.constraintSettings);

@@ -11,9 +11,11 @@ inline std::uint64_t splitMix64Finalise(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
-// A well-mixed 64-bit seed from a seed and two labels (e.g. a terrain cell's
-// indices, or a camera index and a purpose), so that each part of a
-// simulation draws from its own reproducible stream (splitmix64 finaliser).
+// A well-mixed 64-bit seed from a seed and two labels (e.g. a purpose and an
+// index, or a terrain cell's indices), so that each part of a computation
+// draws from its own reproducible stream (splitmix64 finaliser). The one rule
+// by which lrsvo derives streams from a user's seed: unlike seed + k, whose
+// stream k + 1 is the next seed's stream k, neighbouring seeds share nothing.
 std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t a, std::uint64_t b = 0);
 
 // A small, fast generator (splitmix64) for the many short streams of a

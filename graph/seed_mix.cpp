@@ -1,4 +1,4 @@
-#include "lrsvo/sim/seed_mix.h"
+#include "lrsvo/graph/seed_mix.h"
 
 namespace lrsvo {
 namespace {
