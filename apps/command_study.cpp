@@ -94,20 +94,19 @@ int figureNumber(const Study& study) {
   return digit == std::string::npos ? 1 << 20 : std::stoi(study.figure.substr(digit));
 }
 
-std::vector<const Study*> studiesInFigureOrder() {
-  std::vector<const Study*> ordered;
-  for (const Study& s : studies()) ordered.push_back(&s);
-  std::stable_sort(ordered.begin(), ordered.end(), [](const Study* a, const Study* b) {
-    return std::make_pair(figureNumber(*a), a->name) < std::make_pair(figureNumber(*b), b->name);
+std::vector<Study> studiesInFigureOrder() {
+  std::vector<Study> ordered = studies();
+  std::stable_sort(ordered.begin(), ordered.end(), [](const Study& a, const Study& b) {
+    return std::make_pair(figureNumber(a), a.name) < std::make_pair(figureNumber(b), b.name);
   });
   return ordered;
 }
 
 void listStudies() {
   std::printf("%-20s %-8s %-14s %s\n", "study", "figure", "paper trials", "title");
-  for (const Study* s : studiesInFigureOrder())
-    std::printf("%-20s %-8s %-14s %s\n", s->name.c_str(), s->figure.c_str(),
-                s->paperTrials > 0 ? std::to_string(s->paperTrials).c_str() : "-", s->title.c_str());
+  for (const Study& s : studiesInFigureOrder())
+    std::printf("%-20s %-8s %-14s %s\n", s.name.c_str(), s.figure.c_str(),
+                s.paperTrials > 0 ? std::to_string(s.paperTrials).c_str() : "-", s.title.c_str());
 }
 
 void runAll(const StudyCommandOptions& o) {
@@ -115,16 +114,16 @@ void runAll(const StudyCommandOptions& o) {
       o.out.empty() ? std::filesystem::path("lrsvo_studies") : std::filesystem::path(o.out);
   std::vector<StudyOutcome> outcomes;
   std::string failed;
-  for (const Study* study : studiesInFigureOrder()) {
-    StudyOutcome outcome{study->name, study->figure, study->title, 0.0, ""};
+  for (const Study& study : studiesInFigureOrder()) {
+    StudyOutcome outcome{study.name, study.figure, study.title, 0.0, ""};
     const Stopwatch stopwatch;
     try {
-      outcome.wallSeconds = runOne(*study, studyOptions(o, study->name, outDir / study->name));
+      outcome.wallSeconds = runOne(study, studyOptions(o, study.name, outDir / study.name));
     } catch (const std::exception& e) {
       outcome.error = e.what();
       outcome.wallSeconds = stopwatch.seconds();
-      failed += (failed.empty() ? "" : ", ") + study->name;
-      std::cerr << "[" << study->name << "] failed: " << e.what() << '\n';
+      failed += (failed.empty() ? "" : ", ") + study.name;
+      std::cerr << "[" << study.name << "] failed: " << e.what() << '\n';
     }
     std::cout << '\n';
     outcomes.push_back(std::move(outcome));
@@ -137,7 +136,7 @@ void runAll(const StudyCommandOptions& o) {
 void runStudyCommand(const StudyCommandOptions& o) {
   if (o.name == "list") return listStudies();
   if (o.name == "all") return runAll(o);
-  const Study& study = findStudy(o.name);
+  const Study study = findStudy(o.name);
   const std::filesystem::path outDir =
       o.out.empty() ? std::filesystem::path("lrsvo_studies") / study.name : std::filesystem::path(o.out);
   try {
@@ -151,10 +150,9 @@ void runStudyCommand(const StudyCommandOptions& o) {
 
 std::string studyFooter() {
   std::string text = "Studies (lrsvo study list):\n";
-  for (const Study* s : studiesInFigureOrder()) {
-    text +=
-        "  " + s->name + std::string(s->name.size() < 20 ? 20 - s->name.size() : 1, ' ') + s->figure + ": " + s->title;
-    if (s->paperTrials > 0) text += " (" + std::to_string(s->paperTrials) + " trials per case by default)";
+  for (const Study& s : studiesInFigureOrder()) {
+    text += "  " + s.name + std::string(s.name.size() < 20 ? 20 - s.name.size() : 1, ' ') + s.figure + ": " + s.title;
+    if (s.paperTrials > 0) text += " (" + std::to_string(s.paperTrials) + " trials per case by default)";
     text += '\n';
   }
   text +=

@@ -1,4 +1,3 @@
-#include <algorithm>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -7,19 +6,11 @@
 #include "apps/failure_report.h"
 #include "apps/stop_on_signal.h"
 
-namespace lrsvo::cli {
-std::vector<Command>& commands() {
-  static std::vector<Command> all;
-  return all;
-}
-}  // namespace lrsvo::cli
-
 int main(int argc, char** argv) {
   CLI::App app{"lrsvo: long-range stereo visual odometry on a g2o-style graph optimiser"};
   app.require_subcommand(1);
-  auto& commands = lrsvo::cli::commands();
-  std::sort(commands.begin(), commands.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
-  for (const auto& command : commands) command.add(app);
+  for (const auto& [name, entry] : lrsvo::Registry<lrsvo::cli::Command>::instance().entries())
+    entry.factory()->add(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -9,6 +9,7 @@
 #include "lrsvo/constraints/constraint_method.h"
 #include "lrsvo/graph/block_system.h"
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/optimization_algorithm.h"
 #include "lrsvo/graph/registry.h"
 #include "lrsvo/graph/stopwatch.h"
 
@@ -32,13 +33,7 @@ class NloptMethod : public ConstraintMethod {
     const Stopwatch start;
     enforceStart(false);
     BlockSystem system(graph, false);
-    SolverSummary summary;
-    summary.solver = name_;
-    summary.threads = options.threads;
-    summary.vertexCount = system.blockCount();
-    summary.edgeCount = static_cast<int>(graph.edges().size());
-    summary.parameterCount = system.scalarCount();
-    summary.initialCost = system.cost(options.threads);
+    SolverSummary summary = beginSummary(name_, graph, system, options.threads);
     if (!std::isfinite(summary.initialCost)) throw Error("nlopt: the start cost is not finite");
     summary.iterations.push_back({.iteration = 0, .cost = summary.initialCost});
 

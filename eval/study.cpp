@@ -142,19 +142,26 @@ void StudyReport::print(std::ostream& out) const {
   out << line;
 }
 
-const std::vector<Study>& studies() {
-  static const std::vector<Study> all = {depthDistributionStudy(), disparityStudy(), epipolarStudy(),
-                                         initAltitudeStudy(),      initScaleStudy(), rangeBiasStudy(),
-                                         triangulationStudy()};
+void Study::addBuiltins(Registry<Study>& registry) {
+  for (Study study : {depthDistributionStudy(), disparityStudy(), epipolarStudy(), initAltitudeStudy(),
+                      initScaleStudy(), rangeBiasStudy(), triangulationStudy()}) {
+    const std::string name = study.name, title = study.title;
+    registry.add(
+        name, [study = std::move(study)] { return std::make_unique<Study>(study); }, title);
+  }
+}
+
+std::vector<Study> studies() {
+  std::vector<Study> all;
+  for (const auto& [name, entry] : Registry<Study>::instance().entries()) all.push_back(*entry.factory());
   return all;
 }
 
-const Study& findStudy(const std::string& name) {
-  for (const Study& s : studies())
-    if (s.name == name) return s;
-  std::string known;
-  for (const Study& s : studies()) known += (known.empty() ? "" : ", ") + s.name;
-  throw Error("unknown study '" + name + "'; known: " + (known.empty() ? "(none)" : known));
+Study findStudy(const std::string& name) {
+  const Registry<Study>& registry = Registry<Study>::instance();
+  if (!registry.contains(name))
+    throw Error("unknown study '" + name + "'; known: " + (registry.entries().empty() ? "(none)" : registry.names()));
+  return *registry.create(name);
 }
 
 }  // namespace lrsvo

@@ -10,6 +10,8 @@
 
 #include "lrsvo/eval/plotting.h"
 
+#include "lrsvo/graph/registry.h"
+
 namespace lrsvo {
 
 // Settings every study takes (`lrsvo study NAME --seed --trials --out`).
@@ -80,16 +82,20 @@ class StudyReport {
   double seconds_ = 0.0;
 };
 
-// A study of the paper, defined in its own file of eval/studies/.
+// A study, in Registry<Study> by name. The paper's are defined one per file
+// of eval/studies/ and added on the registry's first use; a program adds its
+// own with Registry<Study>::instance().add(...).
 struct Study {
   std::string name;    // e.g. "range-bias"
   std::string figure;  // e.g. "Fig. 6"
   std::string title;
   int paperTrials = 0;  // the paper's trial count (0: not a Monte Carlo study)
   std::function<StudyReport(const StudyOptions&)> run;
+
+  static void addBuiltins(Registry<Study>& registry);
 };
 
-const std::vector<Study>& studies();              // in a fixed order
-const Study& findStudy(const std::string& name);  // throws lrsvo::Error listing the known names
+std::vector<Study> studies();              // every registered study, by name
+Study findStudy(const std::string& name);  // throws lrsvo::Error listing the known names
 
 }  // namespace lrsvo

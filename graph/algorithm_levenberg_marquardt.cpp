@@ -13,87 +13,66 @@ namespace {
 // LevenbergMarquardtOptions::minRelativeDecrease; otherwise the estimates are
 // restored and lambda grows geometrically.
 class LevenbergMarquardt : public OptimizationAlgorithm {
- public:
-  void run(OptimizationContext& context) override {
+ protected:
+  void begin(OptimizationContext& context) override {
+    const LevenbergMarquardtOptions& lm = context.options().lm;
+    multiplicative_ = lm.damping == Damping::kMultiplicative;
+    lambda_ = lm.initialLambda;
+    if (lambda_ < 0) lambda_ = multiplicative_ ? 1e-4 : 1e-4 * context.system().diagonal().maxCoeff();
+    growth_ = 2.0;
+    maxLambda_ = lm.maxLambda;
+    shift_.resize(context.system().scalarCount());
+  }
+
+  Step tryStep(OptimizationContext& context, double cost, IterationRecord& record, double& trialCost) override {
     const SolverOptions& options = context.options();
     const LevenbergMarquardtOptions& lm = options.lm;
-    SolverSummary& summary = context.summary();
-    BlockSystem& system = context.system();
-    const bool multiplicative = lm.damping == Damping::kMultiplicative;
+    const BlockSystem& system = context.system();
+    for (int i = 0; i < shift_.size(); ++i)
+      shift_[i] =
+          multiplicative_ ? lambda_ * std::clamp(system.diagonal()[i], lm.minDiagonal, lm.maxDiagonal) : lambda_;
+    record.lambda = lambda_;
+    if (!context.solveStep(shift_, dx_)) return Step::kRejected;
 
-    double cost = context.linearize();
-    double lambda = lm.initialLambda;
-    if (lambda < 0) lambda = multiplicative ? 1e-4 : 1e-4 * system.diagonal().maxCoeff();
-    double growth = 2.0;
-    summary.iterations.front().gradientMaxNorm = context.constraints().gradientMaxNorm(system);
-    Eigen::VectorXd dx, shift(system.scalarCount());
-
-    for (int iteration = 1;; ++iteration) {
-      const double gradientNorm = context.constraints().gradientMaxNorm(system);
-      if (gradientNorm <= options.gradientTolerance) {
-        summary.termination = Termination::kGradientTolerance;
-        break;
-      }
-      if (iteration > options.maxIterations) {
-        summary.termination = Termination::kMaxIterations;
-        break;
-      }
-      if (context.outOfTime()) {
-        summary.termination = Termination::kTimeLimit;
-        break;
-      }
-
-      for (int i = 0; i < shift.size(); ++i)
-        shift[i] = multiplicative ? lambda * std::clamp(system.diagonal()[i], lm.minDiagonal, lm.maxDiagonal) : lambda;
-      IterationRecord record{.iteration = iteration, .cost = cost, .gradientMaxNorm = gradientNorm, .lambda = lambda};
-
-      bool accepted = false;
-      if (context.solveStep(shift, dx)) {
-        record.stepNorm = dx.norm();
-        const double xNorm = context.estimateNorm();
-        if (record.stepNorm <= options.parameterTolerance * (xNorm + options.parameterTolerance)) {
-          context.record(record);
-          summary.termination = Termination::kParameterTolerance;
-          break;
-        }
-        const double predicted = context.predictedDecrease(shift, dx);
-        context.applyStep(dx);
-        const double trialCost = context.cost();
-        const double decrease = cost - trialCost;
-        record.costChange = decrease;
-        const double gain = decrease / predicted;
-        accepted = std::isfinite(trialCost) && decrease > 0 && predicted > 0 && gain > lm.minRelativeDecrease;
-        if (accepted) {
-          const double relativeDecrease = decrease / cost;
-          cost = trialCost;
-          record.cost = cost;
-          record.accepted = true;
-          ++summary.successfulSteps;
-          lambda = std::max(lm.minLambda, lambda * std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3)));
-          growth = 2.0;
-          if (relativeDecrease <= options.functionTolerance) {
-            context.record(record);
-            summary.termination = Termination::kFunctionTolerance;
-            break;
-          }
-          cost = context.linearize();
-        } else {
-          context.rejectStep();
-        }
-      }
-      if (!accepted) {
-        ++summary.unsuccessfulSteps;
-        lambda *= growth;
-        growth *= 2.0;
-      }
+    record.stepNorm = dx_.norm();
+    const double xNorm = context.estimateNorm();
+    if (record.stepNorm <= options.parameterTolerance * (xNorm + options.parameterTolerance)) {
       context.record(record);
-      if (lambda > lm.maxLambda) {
-        summary.termination = Termination::kDampingLimit;
-        break;
-      }
+      context.summary().termination = Termination::kParameterTolerance;
+      return Step::kStop;
     }
-    summary.finalCost = cost;
+    const double predicted = context.predictedDecrease(shift_, dx_);
+    context.applyStep(dx_);
+    trialCost = context.cost();
+    const double decrease = cost - trialCost;
+    record.costChange = decrease;
+    const double gain = decrease / predicted;
+    if (!(std::isfinite(trialCost) && decrease > 0 && predicted > 0 && gain > lm.minRelativeDecrease)) {
+      context.rejectStep();
+      return Step::kRejected;
+    }
+    lambda_ = std::max(lm.minLambda, lambda_ * std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * gain - 1.0, 3)));
+    growth_ = 2.0;
+    return Step::kAccepted;
   }
+
+  void afterRejection() override {
+    lambda_ *= growth_;
+    growth_ *= 2.0;
+  }
+
+  bool exhausted(SolverSummary& summary) const override {
+    if (lambda_ <= maxLambda_) return false;
+    summary.termination = Termination::kDampingLimit;
+    return true;
+  }
+
+ private:
+  bool multiplicative_ = true;
+  double lambda_ = 0.0;
+  double growth_ = 2.0;
+  double maxLambda_ = 0.0;
+  Eigen::VectorXd shift_, dx_;
 };
 
 }  // namespace

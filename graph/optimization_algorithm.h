@@ -1,5 +1,7 @@
 #pragma once
 
+#include <string>
+
 #include "lrsvo/graph/block_system.h"
 #include "lrsvo/graph/constraint_handler.h"
 #include "lrsvo/graph/linear_solver.h"
@@ -53,8 +55,17 @@ class OptimizationContext {
   bool stepAdjusted_ = false;
 };
 
-// A minimisation loop over the block system, registered by name in
-// Registry<OptimizationAlgorithm> ("lm", "gn").
+// The head of a solve's summary, shared by every minimiser (the optimiser's
+// algorithms, and constraint methods with loops of their own): the solver's
+// name, threads, the system's sizes and its cost at the start.
+SolverSummary beginSummary(const std::string& solverName, const Graph& graph, const BlockSystem& system, int threads);
+
+// A minimiser over the block system, registered by name in
+// Registry<OptimizationAlgorithm> ("lm", "gn"). Every algorithm shares one
+// loop (run): the termination tests (gradient, iterations, time, function
+// tolerance), the iteration records, the step counts and the final cost, as
+// Ceres' trust-region minimiser is shared by its strategies. An algorithm
+// supplies its step: how it is computed, tried, accepted or rejected.
 class OptimizationAlgorithm {
  public:
   // The graph library's algorithms (Registry<OptimizationAlgorithm> adds them on first use).
@@ -62,7 +73,27 @@ class OptimizationAlgorithm {
 
   virtual ~OptimizationAlgorithm() = default;
   // Runs from the current estimates; fills iterations, final cost, termination.
-  virtual void run(OptimizationContext& context) = 0;
+  void run(OptimizationContext& context);
+
+ protected:
+  enum class Step {
+    kAccepted,  // the estimates moved to the trial point
+    kRejected,  // the estimates are as they were
+    kStop,  // the algorithm ends the run: it set the summary's termination (and recorded the iteration if it should)
+  };
+  // Called once, after the first linearisation.
+  virtual void begin(OptimizationContext& context) { (void)context; }
+  // Tries one step from the current linearisation, whose cost is `cost`;
+  // fills the record's step norm, lambda and cost change, and for an accepted
+  // step the trial point's cost.
+  virtual Step tryStep(OptimizationContext& context, double cost, IterationRecord& record, double& trialCost) = 0;
+  // After a rejected step, before its record is written.
+  virtual void afterRejection() {}
+  // True when the algorithm cannot go on (it then sets the termination); asked after every step.
+  virtual bool exhausted(SolverSummary& summary) const {
+    (void)summary;
+    return false;
+  }
 };
 
 }  // namespace lrsvo

@@ -94,13 +94,7 @@ SolverSummary Optimizer::optimize(Graph& graph, ConstraintHandler& constraints) 
   BlockSystem system(graph, solver->usesSchurOrdering());
   solver->analyze(system);
 
-  SolverSummary summary;
-  summary.solver = options_.name();
-  summary.threads = options_.threads;
-  summary.vertexCount = system.blockCount();
-  summary.edgeCount = static_cast<int>(graph.edges().size());
-  summary.parameterCount = system.scalarCount();
-  summary.initialCost = system.cost(options_.threads);
+  SolverSummary summary = beginSummary(options_.name(), graph, system, options_.threads);
   if (!std::isfinite(summary.initialCost)) throwNonFiniteCost(graph);
   summary.setupSeconds = start.seconds();
 

@@ -4,7 +4,7 @@
 
 namespace lrsvo {
 
-// The paper's studies, one per file of eval/studies/; studies() lists them.
+// The paper's studies, one per file of eval/studies/; Study::addBuiltins registers them.
 Study depthDistributionStudy();
 Study disparityStudy();
 Study epipolarStudy();

@@ -1,4 +1,4 @@
-#include "unit_tests/test_problems.h"
+#include "unit_tests/graph/test_problems.h"
 
 #include <memory>
 #include <random>

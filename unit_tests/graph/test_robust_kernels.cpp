@@ -11,7 +11,7 @@
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/registry.h"
 #include "lrsvo/graph/robust_kernel.h"
-#include "unit_tests/test_problems.h"
+#include "unit_tests/graph/test_problems.h"
 
 namespace lrsvo::test {
 namespace {

@@ -13,7 +13,7 @@
 #include "lrsvo/edges/edge_types.h"
 #include "lrsvo/graph/graph_file.h"
 #include "lrsvo/graph/optimizer.h"
-#include "unit_tests/test_problems.h"
+#include "unit_tests/graph/test_problems.h"
 
 namespace lrsvo::test {
 namespace {

@@ -13,7 +13,7 @@
 #include "lrsvo/graph/robust_kernel.h"
 #include "lrsvo/vertices/so3.h"
 #include "lrsvo/vertices/vertex_bal_camera.h"
-#include "unit_tests/test_problems.h"
+#include "unit_tests/graph/test_problems.h"
 
 namespace lrsvo::test {
 namespace {

@@ -15,7 +15,7 @@
 #include "lrsvo/graph/graph_file.h"
 #include "lrsvo/graph/optimizer.h"
 #include "lrsvo/vertices/vertex_bal_camera.h"
-#include "unit_tests/test_problems.h"
+#include "unit_tests/graph/test_problems.h"
 
 namespace lrsvo::test {
 namespace {

@@ -11,7 +11,7 @@
 #include "lrsvo/graph/linear_solver.h"
 #include "lrsvo/graph/optimizer.h"
 #include "lrsvo/graph/registry.h"
-#include "unit_tests/test_problems.h"
+#include "unit_tests/graph/test_problems.h"
 
 namespace lrsvo::test {
 namespace {

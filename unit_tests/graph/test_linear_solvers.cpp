@@ -18,7 +18,7 @@
 #include "lrsvo/graph/optimizer.h"
 #include "lrsvo/graph/registry.h"
 #include "lrsvo/graph/schur_solver.h"
-#include "unit_tests/test_problems.h"
+#include "unit_tests/graph/test_problems.h"
 
 namespace lrsvo::test {
 namespace {

@@ -11,7 +11,7 @@
 #include "lrsvo/graph/marginal_covariance.h"
 #include "lrsvo/sim/window_problem.h"
 #include "lrsvo/vertices/so3.h"
-#include "unit_tests/test_problems.h"
+#include "unit_tests/graph/test_problems.h"
 
 namespace lrsvo::test {
 namespace {
