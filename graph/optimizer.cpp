@@ -73,10 +73,7 @@ void SolverOptions::validate() const {
   if (maxIterations < 0) throw Error("solver: max iterations must not be negative");
 }
 
-Optimizer::Optimizer(SolverOptions options) : options_(std::move(options)) {
-  if (options_.threads < 1) throw Error("solver: threads must be at least 1");
-  if (options_.maxIterations < 0) throw Error("solver: max iterations must not be negative");
-}
+Optimizer::Optimizer(SolverOptions options) : options_(std::move(options)) { options_.validate(); }
 
 SolverSummary Optimizer::optimize(Graph& graph) const {
   ConstraintHandler unconstrained;

@@ -11,6 +11,7 @@ namespace lrsvo {
 // options, under an optional constraint method.
 class Optimizer {
  public:
+  // Throws lrsvo::Error on invalid options (SolverOptions::validate).
   explicit Optimizer(SolverOptions options = {});
 
   const SolverOptions& options() const { return options_; }
