@@ -7,11 +7,13 @@
 
 #include "lrsvo/eval/paper_cameras.h"
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/seed_mix.h"
 
 namespace lrsvo {
 namespace {
 
 constexpr double kFrameRate_hz = 30.0;
+constexpr std::uint64_t kFlexStream = 0x666c6578;  // "flex": the rig's static offset from calibration
 
 Eigen::Vector3d centre(const Eigen::Isometry3d& cameraFromWorld) { return cameraFromWorld.inverse().translation(); }
 
@@ -51,7 +53,7 @@ FeatureSimulationOptions initializationSimulation(const InitializationFlight& fl
   options.terrain.seed = flight.seed;
   options.deformation.seed = flight.seed;
   options.deformation.drift.setZero();
-  std::mt19937_64 rng(flight.seed ^ 0x5eedf1e7ULL);
+  std::mt19937_64 rng(mixSeed(flight.seed, kFlexStream));
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   for (int i = 0; i < 6; ++i)
     options.deformation.offset[i] = flight.flexFraction * options.rig.tolerance[i] * uniform(rng);

@@ -16,6 +16,7 @@
 #include "lrsvo/eval/study.h"
 #include "lrsvo/frontend/odometry/long_range_initializer.h"
 #include "lrsvo/frontend/odometry/rigid_stereo_initializer.h"
+#include "lrsvo/graph/seed_mix.h"
 #include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
@@ -136,7 +137,7 @@ StudyReport runInitAltitude(const StudyOptions& options) {
     for (int trial = 0; trial < trials; ++trial) {
       flight.altitude_m = altitude;
       flight.speed_m_s = paperSpeedForAltitude(altitude);
-      flight.seed = options.seed * 1000003ULL + static_cast<std::uint64_t>(altitude) * 1009ULL + trial;
+      flight.seed = mixSeed(options.seed, static_cast<std::uint64_t>(altitude), static_cast<std::uint64_t>(trial));
       InitializationFlight exact = flight;
       exact.flexFraction = 0.0;
       const SimulatedSequence flexedSequence = simulateSequence(initializationSimulation(flight));

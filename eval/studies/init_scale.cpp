@@ -16,6 +16,7 @@
 #include "lrsvo/eval/studies/study_support.h"
 #include "lrsvo/eval/study.h"
 #include "lrsvo/frontend/odometry/long_range_initializer.h"
+#include "lrsvo/graph/seed_mix.h"
 #include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
@@ -69,7 +70,7 @@ StudyReport runInitScale(const StudyOptions& options) {
   const int steps = static_cast<int>(std::size(kStartScales)) * trials;
   int step = 0;
   for (int trial = 0; trial < trials; ++trial) {
-    flight.seed = options.seed * 1000003ULL + static_cast<std::uint64_t>(trial);
+    flight.seed = mixSeed(options.seed, static_cast<std::uint64_t>(trial));
     const SimulatedSequence sequence = simulateSequence(initializationSimulation(flight));
     const double firstPair_m = (sequence.trueCameraFromWorld[1].inverse().translation() -
                                 sequence.trueCameraFromWorld[0].inverse().translation())

@@ -7,9 +7,12 @@
 
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/optimizer.h"
+#include "lrsvo/graph/seed_mix.h"
 
 namespace lrsvo {
 namespace {
+
+constexpr std::uint64_t kPoseStream = 0x706f7365;  // "pose": MLESAC of frame k
 
 using PixelsByTrack = std::map<int, Eigen::Vector2d>;
 
@@ -106,7 +109,7 @@ MonocularResult mapFromPair(const Rig& rig, const std::vector<FrameObservations>
       return result;
     }
     PoseEstimatorOptions poseOptions = options.pose;
-    poseOptions.seed = options.seed + static_cast<std::uint64_t>(k);
+    poseOptions.seed = mixSeed(options.seed, kPoseStream, static_cast<std::uint64_t>(k));
     const PoseEstimate pose = estimatePose(matches, camera, poseOptions);
     if (!pose.success) {
       result.failure = "monocular, frame " + std::to_string(k) + ": " + pose.failure;

@@ -5,10 +5,15 @@
 
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/registry.h"
+#include "lrsvo/graph/seed_mix.h"
 #include "lrsvo/graph/stopwatch.h"
 
 namespace lrsvo {
 namespace {
+
+// Streams of the run's seed, each indexed by frame: the initialisation that
+// starts at a frame, and the MLESAC pose of a frame.
+constexpr std::uint64_t kInitializerStream = 0x696e6974, kPoseStream = 0x706f7365;  // "init", "pose"
 
 int baseObservationCount(const FrameObservations& frame) {
   int count = 0;
@@ -127,7 +132,8 @@ std::vector<FrameEstimate> Odometry::initialize() {
   std::vector<FrameObservations> sampled;
   for (std::size_t position : samples_) sampled.push_back(pending_[position]);
   LongRangeInitializerOptions initializerOptions = options_.initializer;
-  initializerOptions.seed = options_.seed + static_cast<std::uint64_t>(pendingIndices_.front());
+  initializerOptions.seed =
+      mixSeed(options_.seed, kInitializerStream, static_cast<std::uint64_t>(pendingIndices_.front()));
   const InitializationResult result = LongRangeInitializer(initializerOptions).initialize(rig_, sampled);
 
   std::vector<FrameEstimate> estimates;
@@ -229,7 +235,7 @@ bool Odometry::estimateFramePose(const FrameObservations& frame, int index, Eige
   }
   estimate.mappedMatches = static_cast<int>(matches.size());
   PoseEstimatorOptions poseOptions = options_.pose;
-  poseOptions.seed = options_.seed ^ (0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(index + 1));
+  poseOptions.seed = mixSeed(options_.seed, kPoseStream, static_cast<std::uint64_t>(index));
   const PoseEstimate pose = estimatePose(matches, rig_.cameras[0], poseOptions);
   estimate.poseInliers = pose.inlierCount;
   if (!pose.success || pose.inlierCount < options_.minPoseInliers) return false;

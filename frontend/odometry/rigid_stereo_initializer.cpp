@@ -8,9 +8,12 @@
 #include "lrsvo/frontend/odometry/stereo_start.h"
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/optimizer.h"
+#include "lrsvo/graph/seed_mix.h"
 
 namespace lrsvo {
 namespace {
+
+constexpr std::uint64_t kPoseStream = 0x706f7365;  // "pose": MLESAC of frame k
 
 std::string format(const char* pattern, double value) {
   char buffer[64];
@@ -69,7 +72,7 @@ InitializationResult RigidStereoInitializer::initialize(const Rig& rig,
       break;
     }
     PoseEstimatorOptions poseOptions = o.pose;
-    poseOptions.seed = o.seed + static_cast<std::uint64_t>(k);
+    poseOptions.seed = mixSeed(o.seed, kPoseStream, static_cast<std::uint64_t>(k));
     const PoseEstimate pose = estimatePose(matches, rig.cameras[0], poseOptions);
     if (!pose.success) {
       failure = "frame " + std::to_string(k) + ": " + pose.failure;

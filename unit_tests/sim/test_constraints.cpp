@@ -17,7 +17,7 @@
 #include "lrsvo/graph/registry.h"
 #include "lrsvo/sim/window_problem.h"
 
-// The constraint plugins on seeded stereo windows (issue 3): the box holds,
+// The constraint plugins on seeded stereo windows: the box holds,
 // KKT holds at the solution, inactive bounds change nothing, and with active
 // bounds the log barrier, gradient projection and NLopt agree.
 //
