@@ -31,6 +31,9 @@ class SimFrameSource : public FrameSource {
   // Flies the scenario (throws lrsvo::Error on bad options or a flight that
   // is not above the terrain).
   explicit SimFrameSource(SimScenario scenario);
+  // Its renderer refers to its terrain and texture: neither copyable nor movable.
+  SimFrameSource(const SimFrameSource&) = delete;
+  SimFrameSource& operator=(const SimFrameSource&) = delete;
 
   std::string name() const override { return "sim:" + scenario_.name; }
   const Rig& rig() const override { return scenario_.rig; }

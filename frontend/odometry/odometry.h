@@ -43,6 +43,9 @@ class Odometry {
  public:
   // Throws lrsvo::Error on an invalid rig or options.
   Odometry(Rig rig, OdometryOptions options);
+  // Its window refers to its rig and options: neither copyable nor movable.
+  Odometry(const Odometry&) = delete;
+  Odometry& operator=(const Odometry&) = delete;
 
   // Feeds the next frame; returns the estimates that became known, in frame
   // order: none while initialising, all buffered frames when it succeeds,

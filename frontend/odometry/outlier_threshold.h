@@ -16,7 +16,7 @@ struct OutlierTestOptions {
   // A solve that stopped short of convergence (at its iteration limit) may lie
   // far from the optimum: when the test would then condemn more than this share
   // of the window's tracks, the solve, not the tracks, is wrong, and
-  // maxThreshold_px alone applies (SlidingWindow::adjust).
+  // maxThreshold_px alone applies (findWindowOutliers).
   double maxRejectedTrackFraction = 0.2;
 };
 

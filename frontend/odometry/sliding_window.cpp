@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "lrsvo/frontend/odometry/bundle_graph.h"
+#include "lrsvo/frontend/odometry/window_outliers.h"
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/marginal_covariance.h"
 #include "lrsvo/graph/optimizer.h"
@@ -123,7 +124,7 @@ SolverSummary SlidingWindow::solve(BundleGraph& bundle, const Bounds& bounds) co
   return Optimizer(solver).optimize(bundle.graph());
 }
 
-WindowAdjustment SlidingWindow::adjust() {
+SparseMap SlidingWindow::windowMap() const {
   // Points seen by one keyframe only are left out: one view (and a short
   // stereo baseline) cannot place them; they stay in the map for tracking.
   const std::unordered_map<int, int> counts = baseViewCounts(keyframes_);
@@ -133,96 +134,82 @@ WindowAdjustment SlidingWindow::adjust() {
     auto count = counts.find(track);
     if (count != counts.end() && count->second >= 2) map.points.emplace(track, point);
   }
-  BundleGraph bundle(rig_, map, std::min<int>(options_.fixedPoses, static_cast<int>(keyframes_.size())),
-                     options_.bundle);
+  return map;
+}
+
+void SlidingWindow::addToBundle(BundleGraph& bundle, const WindowFrame& frame) const {
   // S is estimated at the newest keyframe's time; with a rate, older
   // keyframes see it as it was then.
-  const bool extrinsicFixed = options_.extrinsicMode == ExtrinsicMode::kRigid;
-  const bool drifting = !extrinsicFixed && options_.extrinsicRateSigma > 0.0;
-  const double referenceTime_s = keyframes_.back().observations.time_s;
-  const std::vector<Vector6> start = extrinsicsAt(referenceTime_s);
+  const std::vector<Vector6> start = extrinsicsAt(frame.referenceTime_s);
   for (int k = 1; k <= rig_.secondaryCount(); ++k) {
-    bundle.addExtrinsic(k, start[k - 1], extrinsicFixed);
-    if (drifting)
-      bundle.addExtrinsicRate(k, rates_[k - 1], options_.extrinsicRateSigma * rig_.tolerance, referenceTime_s);
+    bundle.addExtrinsic(k, start[k - 1], extrinsicFixed());
+    if (drifting())
+      bundle.addExtrinsicRate(k, rates_[k - 1], options_.extrinsicRateSigma * rig_.tolerance, frame.referenceTime_s);
   }
   for (std::size_t i = 0; i < keyframes_.size(); ++i)
     bundle.addObservations(static_cast<int>(i), keyframes_[i].observations);
+  if (!anchors_.empty()) bundle.addHeldViewScale(std::sqrt(frame.scalePriorVariance));
+  for (const Keyframe& anchor : anchors_) bundle.addHeldView(anchor.cameraFromWorld, frame.origin, anchor.observations);
+}
+
+void SlidingWindow::writeBack(BundleGraph& bundle, const Bounds& bounds, const WindowFrame& frame) {
+  const SparseMap solved = bundle.map();
+  for (std::size_t i = 0; i < keyframes_.size(); ++i) keyframes_[i].cameraFromWorld = solved.cameraFromWorld[i];
+  for (const auto& [track, point] : solved.points) points_[track] = point;
+  extrinsics_ = bundle.extrinsics();
+  extrinsicTime_s_ = frame.referenceTime_s;
+  for (int k = 1; drifting() && k <= rig_.secondaryCount(); ++k) rates_[k - 1] = bundle.extrinsicRate(k)->estimate();
+  if (anchors_.empty()) return;
+  const bool bounded = options_.extrinsicMode == ExtrinsicMode::kBounded;
+  scaleVariance_ =
+      carriedScaleVariance(bundle, bounded ? &bounds : nullptr, frame.scalePriorVariance, options_.windowSize);
+  const double heldScale = bundle.heldViewScale()->kappa();
+  for (Keyframe& anchor : anchors_) {
+    const Eigen::Vector3d centre =
+        frame.origin + heldScale * (anchor.cameraFromWorld.inverse().translation() - frame.origin);
+    anchor.cameraFromWorld.translation() = -(anchor.cameraFromWorld.linear() * centre);
+  }
+}
+
+int SlidingWindow::removeOutliers(const WindowOutliers& outliers) {
+  int removed = 0;
+  for (std::size_t i = 0; i < keyframes_.size(); ++i) {
+    auto& observations = keyframes_[i].observations.observations;
+    const auto before = observations.size();
+    std::erase_if(observations, [&](const Observation& o) {
+      return outliers.rejectedTracks.count(o.track) ||
+             (o.camera != 0 && outliers.secondaryOutliers.count({static_cast<int>(i), o.track}));
+    });
+    removed += static_cast<int>(before - observations.size());
+  }
+  for (int track : outliers.rejectedTracks) points_.erase(track);
+  for (Keyframe& anchor : anchors_)
+    std::erase_if(anchor.observations.observations,
+                  [&](const Observation& o) { return outliers.rejectedTracks.count(o.track); });
+  return removed;
+}
+
+WindowAdjustment SlidingWindow::adjust() {
+  WindowFrame frame;
+  frame.referenceTime_s = keyframes_.back().observations.time_s;
   // Held views scale about the oldest keyframe's centre, which is held too.
-  const Eigen::Vector3d origin = keyframes_.front().cameraFromWorld.inverse().translation();
-  const double priorVariance = scaleVariance_ + options_.scaleDriftPerKeyframe * options_.scaleDriftPerKeyframe;
-  if (!anchors_.empty()) bundle.addHeldViewScale(std::sqrt(priorVariance));
-  for (const Keyframe& anchor : anchors_) bundle.addHeldView(anchor.cameraFromWorld, origin, anchor.observations);
+  frame.origin = keyframes_.front().cameraFromWorld.inverse().translation();
+  frame.scalePriorVariance = scaleVariance_ + options_.scaleDriftPerKeyframe * options_.scaleDriftPerKeyframe;
+  BundleGraph bundle(rig_, windowMap(), std::min<int>(options_.fixedPoses, static_cast<int>(keyframes_.size())),
+                     options_.bundle);
+  addToBundle(bundle, frame);
 
   WindowAdjustment adjustment;
   const Bounds bounds = bundle.extrinsicBounds();
   adjustment.summary = solve(bundle, bounds);
   adjustment.rmsError_px = bundle.rmsReprojectionError_px();
-  const SparseMap solved = bundle.map();
-  for (std::size_t i = 0; i < keyframes_.size(); ++i) keyframes_[i].cameraFromWorld = solved.cameraFromWorld[i];
-  for (const auto& [track, point] : solved.points) points_[track] = point;
-  extrinsics_ = bundle.extrinsics();
-  extrinsicTime_s_ = referenceTime_s;
-  for (int k = 1; drifting && k <= rig_.secondaryCount(); ++k) rates_[k - 1] = bundle.extrinsicRate(k)->estimate();
-  if (!anchors_.empty()) {
-    const bool bounded = options_.extrinsicMode == ExtrinsicMode::kBounded;
-    scaleVariance_ = carriedScaleVariance(bundle, bounded ? &bounds : nullptr, priorVariance, options_.windowSize);
-  }
-  const double heldScale = anchors_.empty() ? 1.0 : bundle.heldViewScale()->kappa();
-  for (Keyframe& anchor : anchors_) {
-    const Eigen::Vector3d centre = origin + heldScale * (anchor.cameraFromWorld.inverse().translation() - origin);
-    anchor.cameraFromWorld.translation() = -(anchor.cameraFromWorld.linear() * centre);
-  }
+  writeBack(bundle, bounds, frame);
 
-  // Outliers: a base-camera outlier condemns the track (a wrong temporal
-  // match, or a corner that is no fixed point, such as a crown's outline
-  // against the ground behind it); a secondary one only that observation (a
-  // wrong stereo match). Each camera's threshold follows its own errors'
-  // noise (a secondary camera's include how well S follows the rig): at a
-  // fixed 4 px, tracks sliding by a pixel or two over the window stayed and
-  // bent its poses.
-  const std::vector<ProjectionError> errors = bundle.projectionErrors();
-  std::vector<std::vector<double>> errorsByCamera(rig_.cameras.size());
-  std::set<int> baseTracks;
-  for (const ProjectionError& error : errors) {
-    errorsByCamera[static_cast<std::size_t>(error.observation.camera)].push_back(error.error_px);
-    if (error.observation.camera == 0) baseTracks.insert(error.observation.track);
-  }
-  std::vector<double> thresholds_px;
-  for (const std::vector<double>& cameraErrors : errorsByCamera)
-    thresholds_px.push_back(outlierThreshold_px(cameraErrors, options_.outliers));
-  std::set<int> rejected;
-  std::set<std::pair<int, int>> badSecondary;  // (keyframe, track)
-  auto findOutliers = [&] {
-    rejected.clear();
-    badSecondary.clear();
-    for (const ProjectionError& error : errors) {
-      if (error.error_px <= thresholds_px[static_cast<std::size_t>(error.observation.camera)]) continue;
-      if (error.observation.camera == 0)
-        rejected.insert(error.observation.track);
-      else
-        badSecondary.insert({error.frame, error.observation.track});
-    }
-  };
-  findOutliers();
-  if (!adjustment.summary.converged() &&
-      static_cast<double>(rejected.size()) > options_.outliers.maxRejectedTrackFraction * baseTracks.size()) {
-    thresholds_px.assign(thresholds_px.size(), options_.outliers.maxThreshold_px);
-    findOutliers();
-  }
-  adjustment.outlierThreshold_px = thresholds_px[0];
-  for (std::size_t i = 0; i < keyframes_.size(); ++i) {
-    auto& observations = keyframes_[i].observations.observations;
-    const auto before = observations.size();
-    std::erase_if(observations, [&](const Observation& o) {
-      return rejected.count(o.track) || (o.camera != 0 && badSecondary.count({static_cast<int>(i), o.track}));
-    });
-    adjustment.removedObservations += static_cast<int>(before - observations.size());
-  }
-  for (int track : rejected) points_.erase(track);
-  for (Keyframe& anchor : anchors_)
-    std::erase_if(anchor.observations.observations, [&](const Observation& o) { return rejected.count(o.track); });
-  adjustment.rejectedTracks.assign(rejected.begin(), rejected.end());
+  const WindowOutliers outliers = findWindowOutliers(bundle.projectionErrors(), static_cast<int>(rig_.cameras.size()),
+                                                     options_.outliers, adjustment.summary.converged());
+  adjustment.outlierThreshold_px = outliers.thresholds_px[0];
+  adjustment.removedObservations = removeOutliers(outliers);
+  adjustment.rejectedTracks.assign(outliers.rejectedTracks.begin(), outliers.rejectedTracks.end());
   return adjustment;
 }
 

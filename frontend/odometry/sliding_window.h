@@ -14,6 +14,10 @@
 
 namespace lrsvo {
 
+class BundleGraph;
+struct SparseMap;
+struct WindowOutliers;
+
 // A frame of the sliding window: its base pose and everything it observed.
 struct Keyframe {
   int frame = 0;
@@ -38,7 +42,10 @@ class SlidingWindow {
  public:
   using Vector6 = VertexStereoExtrinsic::Vector6;
 
+  // The window refers to its owner's rig and options: it is neither copyable nor movable.
   SlidingWindow(const Rig& rig, const OdometryOptions& options);
+  SlidingWindow(const SlidingWindow&) = delete;
+  SlidingWindow& operator=(const SlidingWindow&) = delete;
 
   // Starts over from an initialised map (its keyframes oldest first) whose
   // scale has this relative standard deviation.
@@ -49,7 +56,9 @@ class SlidingWindow {
   // minTriangulationViews keyframes (with its secondary views as further
   // rays, through the current S). Returns the number of new points.
   int triangulateNewTracks();
-  // Bundle adjustment of the window, then removal of outlying observations.
+  // Bundle adjustment of the window, then removal of outlying observations:
+  // builds the window as a graph, solves it, writes the estimates back and
+  // removes the observations findWindowOutliers condemns.
   WindowAdjustment adjust();
   // Drops the oldest keyframes beyond windowSize (they become held anchors),
   // and the points no kept keyframe observes.
@@ -75,7 +84,24 @@ class SlidingWindow {
   Eigen::Isometry3d cameraFromWorld(const Eigen::Isometry3d& baseFromWorld, int camera, double time_s) const;
 
  private:
-  SolverSummary solve(class BundleGraph& bundle, const Bounds& bounds) const;
+  // Where an adjustment stands: the time S is estimated at, the centre the
+  // held views scale about (the oldest keyframe's), the held scale's prior.
+  struct WindowFrame {
+    double referenceTime_s = 0.0;
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+    double scalePriorVariance = 0.0;
+  };
+  // The keyframes' poses and the points at least two of them observe.
+  SparseMap windowMap() const;
+  // Adds S (and its rate), every keyframe's observations and the held views.
+  void addToBundle(BundleGraph& bundle, const WindowFrame& frame) const;
+  SolverSummary solve(BundleGraph& bundle, const Bounds& bounds) const;
+  // Takes the solved poses, points, S, its rate and the held scale into the window.
+  void writeBack(BundleGraph& bundle, const Bounds& bounds, const WindowFrame& frame);
+  // Returns the number of observations removed.
+  int removeOutliers(const WindowOutliers& outliers);
+  bool extrinsicFixed() const { return options_.extrinsicMode == ExtrinsicMode::kRigid; }
+  bool drifting() const { return !extrinsicFixed() && options_.extrinsicRateSigma > 0.0; }
   // Camera k's S at time t (extrinsicsAt).
   Vector6 extrinsicAt(int camera, double time_s) const;
 

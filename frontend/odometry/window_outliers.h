@@ -1,0 +1,31 @@
+#pragma once
+
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "lrsvo/frontend/odometry/bundle_graph.h"
+#include "lrsvo/frontend/odometry/outlier_threshold.h"
+
+namespace lrsvo {
+
+// The observations a window adjustment condemns, from its reprojection errors.
+struct WindowOutliers {
+  std::vector<double> thresholds_px;                // per camera, index 0 the base camera
+  std::set<int> rejectedTracks;                     // a base-camera outlier condemns its track
+  std::set<std::pair<int, int>> secondaryOutliers;  // (keyframe, track): a secondary outlier, that observation only
+};
+
+// Finds the outliers among a window's errors: each camera's threshold comes
+// from its own errors (outlierThreshold_px; a secondary camera's include how
+// well S follows the rig). A base-camera outlier is a wrong temporal match or a
+// corner that is no fixed point (a crown's outline sliding over the ground
+// behind it), so its whole track goes; a secondary one is a wrong stereo
+// match. When the solve did not converge and the test would condemn more than
+// options.maxRejectedTrackFraction of the base camera's tracks, the solve is
+// suspect rather than the tracks: options.maxThreshold_px applies to every
+// camera instead.
+WindowOutliers findWindowOutliers(const std::vector<ProjectionError>& errors, int cameraCount,
+                                  const OutlierTestOptions& options, bool solveConverged);
+
+}  // namespace lrsvo
