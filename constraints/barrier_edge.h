@@ -4,7 +4,7 @@
 
 namespace lrsvo {
 
-// A unary log-barrier term on one parameter of a Euclidean vertex (method.md,
+// A unary log-barrier term on one parameter of a Euclidean vertex (docs/method.md,
 // eq. 17-19): F = -mu log(1 - y^2), y = (x - centre) / halfWidth, i.e.
 // -mu [log(x - b1) + log(b2 - x)] up to a constant that makes F zero at the
 // centre. Exact gradient and Hessian; +inf outside the open box, so a trial

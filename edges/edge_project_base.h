@@ -7,7 +7,7 @@
 
 namespace lrsvo {
 
-// Projection into the base camera (k = 0), method.md eq. 1:
+// Projection into the base camera (k = 0), docs/method.md, eq. 1:
 // x = pi(K0 (R X + t)); residual = x - measurement, in pixels.
 class EdgeProjectBase : public BaseEdge<2, VertexPose, VertexPoint3> {
  public:

@@ -8,7 +8,7 @@
 namespace lrsvo {
 
 // Projection into secondary camera k >= 1 through its extrinsic, shared by
-// every pose of the window (method.md eq. 5 with kappa = 1):
+// every pose of the window (docs/method.md, eq. 5 with kappa = 1):
 // x = pi(K_k R_s (R X + t - c)).
 class EdgeProjectSecondary : public BaseEdge<2, VertexPose, VertexPoint3, VertexStereoExtrinsic> {
  public:
@@ -30,7 +30,7 @@ class EdgeProjectSecondary : public BaseEdge<2, VertexPose, VertexPoint3, Vertex
 };
 
 // The same with the scale kappa of a monocular start as a fourth vertex:
-// x = pi(K_k R_s (R X + t - c / kappa)) (method.md, long-range initialisation).
+// x = pi(K_k R_s (R X + t - c / kappa)) (docs/method.md, long-range initialisation).
 class EdgeProjectSecondaryScaled : public BaseEdge<2, VertexPose, VertexPoint3, VertexStereoExtrinsic, VertexScale> {
  public:
   static constexpr const char* kTypeTag = "PROJECT_SECONDARY_SCALED";

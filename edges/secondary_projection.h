@@ -6,7 +6,7 @@
 
 namespace lrsvo {
 
-// Derivatives of a secondary camera's projection (method.md eq. 5).
+// Derivatives of a secondary camera's projection (docs/method.md, eq. 5).
 struct SecondaryProjectionJacobians {
   Eigen::Matrix<double, 2, 6> pose;
   Eigen::Matrix<double, 2, 3> point;

@@ -14,7 +14,7 @@ inline constexpr int kPaperImageHeight = 768;
 // Fig. 1's normalised focal length.
 inline constexpr double kFigure1Focal_px = 1200.0;
 // The focal length the text implies: "0.2 deg -> ~3 px" needs f = 3 px / 0.2 deg
-// = 859 px, rounded (method.md's note on implicit settings).
+// = 859 px, rounded (docs/method.md, note on implicit settings).
 inline constexpr double kImpliedFocal_px = 860.0;
 
 // f = lens / pixel pitch = 6 mm * 1024 px / 4.8 mm = 1280 px.

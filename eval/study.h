@@ -26,7 +26,7 @@ struct StudyOptions {
   int trialsOr(int paperDefault) const { return trials > 0 ? trials : paperDefault; }
 };
 
-// A figure's headline number with the paper's beside it (method.md's table).
+// A figure's headline number with the paper's beside it (docs/method.md, the paper's numbers to reproduce).
 // `paper` is NaN where the paper gives no number; `note` says how to read it.
 struct StudyCheck {
   std::string name;

@@ -8,7 +8,7 @@
 namespace lrsvo {
 
 // How a secondary camera's true extrinsic s = (x, y, z, roll, pitch, yaw)
-// (method.md: c in the base frame, angles of R_s) departs from its calibration
+// (docs/method.md: c in the base frame, angles of R_s) departs from its calibration
 // in flight. Defaults, against the paper's bounds of +-1 mm and +-10 mrad:
 // - drift 0.3 mm and 2 mrad (0.11 deg): at f ~ 1670 px a 2 mrad rotation moves
 //   the secondary image by ~3 px, the paper's "0.2 deg -> ~3 px" regime in

@@ -16,7 +16,7 @@
 
 namespace lrsvo {
 
-// A seeded stereo sliding window like the VO's (method.md): a base camera
+// A seeded stereo sliding window like the VO's (docs/method.md): a base camera
 // looking straight down at mildly hilly terrain from an aircraft flying along
 // world x (world z up; camera x along the flight, camera z down), a secondary
 // camera `baseline_m` further along the flight, every point tracked over
@@ -33,7 +33,7 @@ struct WindowProblemOptions {
   int imageHeight = 960;
   double horizontalFov_deg = 42.0;  // focal = (width / 2) / tan(fov / 2), ~1667 px; square pixels
   double pixelNoise = 1.0;          // sigma of the noise added to the simulated measurements (0: exact)
-  double measurementSigma = 1.0;    // the model's: information = I / sigma^2 (method.md: 1 px^2)
+  double measurementSigma = 1.0;    // the model's: information = I / sigma^2 (docs/method.md: 1 px^2)
   int minTrackLength = 5;           // frames per point, drawn uniformly, capped by what the footprint allows
   int maxTrackLength = 15;
   double terrainRelief_m = 5.0;      // peak height of the terrain above (and below) its mean
@@ -56,7 +56,7 @@ struct WindowProblemOptions {
   double poseNoise_rad = 0.002;
   double pointNoise_m = 0.5;
 
-  // Initialisation window (method.md, long-range initialisation): the map (all
+  // Initialisation window (docs/method.md, long-range initialisation): the map (all
   // positions) is multiplied by startScale; with withScale a kappa vertex
   // (start 1, truth 1 / startScale) joins every secondary edge.
   bool withScale = false;

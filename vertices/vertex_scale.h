@@ -4,10 +4,11 @@
 
 namespace lrsvo {
 
-// The scale kappa of a monocular start (method.md, eq. 5): the metric
-// baseline c measures c / kappa in the map's arbitrary unit. Scaling the map
-// by kappa makes it metric. Must stay positive; edges reading it give a
-// non-finite residual otherwise, so a step through zero is rejected.
+// The scale kappa of a monocular start (docs/method.md, eq. 5): the metric
+// baseline c measures c / kappa in the map's arbitrary unit, so kappa is the
+// map's metric scale (docs/method.md, long-range initialisation, step 5).
+// Must stay positive; edges reading it give a non-finite residual otherwise,
+// so a step through zero is rejected.
 class VertexScale : public VectorVertex<1> {
  public:
   static constexpr const char* kTypeTag = "SCALE";

@@ -11,7 +11,7 @@ namespace lrsvo {
 // is the secondary camera's centre in the base camera frame and
 // R_s = Rz(yaw) Ry(pitch) Rx(roll) rotates base-frame vectors into the
 // secondary frame: X_c1 = R_s (X_c0 - c). Euclidean, so each of the six
-// numbers can carry bounds (method.md: bounding c, not t_s = -R_s c).
+// numbers can carry bounds (docs/method.md: bounding c, not t_s = -R_s c).
 class VertexStereoExtrinsic : public VectorVertex<6> {
  public:
   static constexpr const char* kTypeTag = "STEREO_EXTRINSIC";

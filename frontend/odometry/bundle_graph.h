@@ -58,7 +58,7 @@ class BundleGraph {
   // the rate starting at `rate` with a prior N(0, diag(sigma^2)), every sigma
   // > 0. Applies to the secondary edges added after this call; not with kappa.
   VertexExtrinsicRate* addExtrinsicRate(int camera, const Vector6& rate, const Vector6& sigma, double referenceTime_s);
-  // kappa (method.md eq. 5) on every secondary edge added after this call.
+  // kappa (docs/method.md, eq. 5) on every secondary edge added after this call.
   VertexScale* addScale(double kappa);
   // Holds the map's unit at the distance between poses a and b (holdCentreDistance).
   void holdDistance(int poseA, int poseB);

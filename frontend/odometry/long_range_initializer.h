@@ -42,7 +42,7 @@ struct LongRangeInitializerOptions {
   std::uint64_t seed = 1;
 };
 
-// The long-range initialisation (method.md, Fig. 14; paper Section 4.3):
+// The long-range initialisation (docs/method.md, Fig. 14; paper Section 4.3):
 //  1. monocular VO over the base camera of the first N frames, the first
 //     pair at distance initialBaseline (buildMonocularMaps: one map per
 //     motion hypothesis of the pair; steps 2-5 run on each, and the one with

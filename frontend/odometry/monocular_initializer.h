@@ -47,7 +47,7 @@ struct MonocularResult {
 };
 
 // Monocular visual odometry over the base camera of the first N frames, at an
-// arbitrary scale (method.md, long-range initialisation, steps 2-3):
+// arbitrary scale (docs/method.md, long-range initialisation, steps 2-3):
 //  - two-view pose of frame 0 and the pair frame p (see pairOverlap) at unit
 //    distance; triangulate their shared inlier tracks;
 //  - each other frame (1..p-1, then p+1..N-1): pose by P3P in MLESAC from its

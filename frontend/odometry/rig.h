@@ -27,8 +27,9 @@ double focalLengthPixels(double lens_mm, double sensorWidth_mm, int imageWidth);
 double focalLengthFromFov(double horizontalFov_rad, int imageWidth);
 
 // A rig of cameras: camera 0 is the base, camera k >= 1 sits at its calibrated
-// extrinsic s_k = (c, roll, pitch, yaw) relative to the base (method.md), with
-// a tolerance q_k on each of the six numbers (the box p +- q of eq. 17-19).
+// extrinsic s_k = (c, roll, pitch, yaw) relative to the base (docs/method.md), with
+// one tolerance q, shared by every secondary camera, on each of the six
+// numbers (the box p +- q of eq. 17-19).
 struct Rig {
   std::vector<Camera> cameras;                             // [0] = base
   std::vector<VertexStereoExtrinsic::Vector6> extrinsics;  // [k - 1] for camera k >= 1

@@ -7,7 +7,7 @@
 #include "lrsvo/constraints/constraint_method.h"
 #include "lrsvo/sim/window_problem.h"
 
-// The paper's Fig. 18 claim on a seeded initialisation window (method.md,
+// The paper's Fig. 18 claim on a seeded initialisation window (docs/method.md,
 // long-range initialisation): 10 frames at 70 m, 60 m flown at 30 m/s (one
 // keyframe per 6.7 m), 500 points, 1 px noise, the deformed rig's extrinsic
 // bounded (+-1 mm, +-0.01 rad, gradient projection), the map handed to BA at
