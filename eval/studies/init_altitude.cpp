@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "lrsvo/eval/initialization_trial.h"
@@ -99,16 +101,17 @@ AltitudeSummary summarise(const std::vector<const Trial*>& trials) {
   return s;
 }
 
-StudyReport runInitAltitude(const StudyOptions& options) {
-  using study_support::format;
-  const Stopwatch stopwatch;
-  StudyReport report("init-altitude", "Fig. 17",
-                     "Final position error of the long-range and the rigid-stereo initialisation vs altitude");
-  const int trials = options.trialsOr(kPaperTrials);
+using Case = std::pair<std::string, double>;  // (method, altitude)
+
+std::vector<double> studyAltitudes() {
   std::vector<double> altitudes;
   for (double a = kAltitudeStep_m; a <= kMaxAltitude_m + 1e-9; a += kAltitudeStep_m) altitudes.push_back(a);
+  return altitudes;
+}
 
-  InitializationFlight flight;
+void addSettings(StudyReport& report, const std::vector<double>& altitudes, int trials) {
+  using study_support::format;
+  const InitializationFlight flight;
   report.addSetting("altitudes_m",
                     format("%g-%g every %g (paper: 10-100)", altitudes.front(), altitudes.back(), kAltitudeStep_m));
   report.addSetting("trials", trials);
@@ -125,11 +128,14 @@ StudyReport runInitAltitude(const StudyOptions& options) {
                     "LongRangeInitializer defaults: 10 frames, kappa, log_barrier, bounds 1 mm / 0.01 rad");
   report.addSetting("rigid_stereo",
                     "RigidStereoInitializer defaults: first-pair triangulation, P3P-MLESAC, BA with S fixed");
+}
 
-  StudyTable& trialTable = report.addTable(
-      "init_altitude_trials.csv",
-      {"altitude_m", "speed_m_s", "trial", "method", "success", "reached_end", "distance_flown_m", "final_error_m",
-       "raw_final_error_m", "final_error_percent", "scale_ratio", "scale_std", "failure"});
+// Every initialiser on each trial's flight at every altitude, one row per run
+// in the trials table.
+std::vector<Trial> runTrials(const StudyOptions& options, const std::vector<double>& altitudes, int trials,
+                             StudyTable& trialTable) {
+  using study_support::format;
+  InitializationFlight flight;
   std::vector<Trial> all;
   const int steps = static_cast<int>(altitudes.size()) * trials;
   int step = 0;
@@ -158,13 +164,23 @@ StudyReport runInitAltitude(const StudyOptions& options) {
       options.progress(static_cast<double>(step) / steps, format("%g m, trial %d of %d", altitude, trial + 1, trials));
     }
   }
+  return all;
+}
 
+struct Summaries {
+  std::map<Case, std::vector<const Trial*>> trialsByCase;
+  std::map<Case, AltitudeSummary> byCase;
+};
+
+Summaries addSummaryTable(StudyReport& report, const std::vector<Trial>& all, const std::vector<double>& altitudes) {
+  using study_support::format;
   StudyTable& summaryTable = report.addTable(
       "init_altitude.csv", {"altitude_m", "method", "trials", "successes", "mean_error_m", "std_error_m",
                             "median_error_m", "max_error_m", "mean_error_percent", "max_error_percent", "within_5m"});
-  std::map<std::pair<std::string, double>, std::vector<const Trial*>> trialsByCase;  // (method, altitude)
+  Summaries result;
+  auto& trialsByCase = result.trialsByCase;
+  auto& summaries = result.byCase;
   for (const Trial& t : all) trialsByCase[{t.method, t.altitude_m}].push_back(&t);
-  std::map<std::pair<std::string, double>, AltitudeSummary> summaries;
   for (const Variant& variant : kVariants)
     for (double altitude : altitudes) {
       const AltitudeSummary s = summarise(trialsByCase.at({variant.name, altitude}));
@@ -175,7 +191,14 @@ StudyReport runInitAltitude(const StudyOptions& options) {
                                                    format("%.6g", s.maxError_m), format("%.6g", s.meanPercent),
                                                    format("%.6g", s.maxPercent), std::to_string(s.withinFiveMetres)});
     }
+  return result;
+}
 
+void addChecks(StudyReport& report, const Summaries& result, const std::vector<double>& altitudes, int trials) {
+  using study_support::format;
+  const InitializationFlight flight;
+  const auto& trialsByCase = result.trialsByCase;
+  const auto& summaries = result.byCase;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const AltitudeSummary& ours100 = summaries.at({"long-range", kPaperMaxAltitude_m});
   const AltitudeSummary& rigid100 = summaries.at({"rigid-stereo", kPaperMaxAltitude_m});
@@ -232,6 +255,21 @@ StudyReport runInitAltitude(const StudyOptions& options) {
                      stds.empty() ? nan : 100.0 * SortedSample(stds).median(), nan, "%",
                      "the scale's std from the information; the final error in % of distance follows it"});
   }
+}
+
+StudyReport runInitAltitude(const StudyOptions& options) {
+  const Stopwatch stopwatch;
+  StudyReport report("init-altitude", "Fig. 17",
+                     "Final position error of the long-range and the rigid-stereo initialisation vs altitude");
+  const int trials = options.trialsOr(kPaperTrials);
+  const std::vector<double> altitudes = studyAltitudes();
+  addSettings(report, altitudes, trials);
+  StudyTable& trialTable = report.addTable(
+      "init_altitude_trials.csv",
+      {"altitude_m", "speed_m_s", "trial", "method", "success", "reached_end", "distance_flown_m", "final_error_m",
+       "raw_final_error_m", "final_error_percent", "scale_ratio", "scale_std", "failure"});
+  const std::vector<Trial> all = runTrials(options, altitudes, trials, trialTable);
+  addChecks(report, addSummaryTable(report, all, altitudes), altitudes, trials);
   report.setSeconds(stopwatch.seconds());
   return report;
 }

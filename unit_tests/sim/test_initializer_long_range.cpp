@@ -106,7 +106,7 @@ TEST(InitializerLongRange, SameSeedSameResult) {
 // Over flat ground (no relief, trees or buildings) the pair's essential
 // matrix may settle on the planar twin, which flies along the ground's normal;
 // on this seed it does (found by trying seeds: 9, 10 and 11 of 1-12 do). Its
-// map ends 59 m from the truth after 60 m flown. The homography's true motion
+// map ends more than half the distance flown from the truth. The homography's true motion
 // is the other hypothesis, and the secondary camera, which fits the true
 // motion only, picks it.
 TEST(InitializerLongRange, SecondaryCameraRejectsThePlanarTwin) {
