@@ -9,10 +9,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/parallel_for.h"
 #include "lrsvo/graph/seed_mix.h"
 #include "lrsvo/graph/stopwatch.h"
 #include "lrsvo/sim/gaussian_noise.h"
-#include "lrsvo/sim/pool_for.h"
 #include "lrsvo/sim/surface_view.h"
 
 namespace lrsvo {
@@ -59,7 +59,7 @@ cv::Mat ImageRenderer::renderScene(const Camera& camera, const Eigen::Isometry3d
   times_.texture_s += phase.lap();
   cv::Mat scene(camera.height, camera.width, CV_32FC1);
   const int chunks = (camera.height + kRowsPerChunk - 1) / kRowsPerChunk;
-  poolFor(0, chunks, options_.threads, [&](int chunk) {
+  parallelFor(0, chunks, options_.threads, 1, [&](int chunk) {
     RowHits row;
     for (int v = chunk * kRowsPerChunk; v < std::min(camera.height, (chunk + 1) * kRowsPerChunk); ++v) {
       view.hitRow(v, 0, camera.width, row);
@@ -84,7 +84,7 @@ cv::Mat ImageRenderer::render(const Camera& camera, const Eigen::Isometry3d& cam
   const std::uint64_t noiseKey =
       mixSeed(seed_ ^ kNoiseStream, static_cast<std::uint64_t>(frame), static_cast<std::uint64_t>(cameraIndex));
   const int chunks = (image.rows + kRowsPerChunk - 1) / kRowsPerChunk;
-  poolFor(0, chunks, options_.threads, [&](int chunk) {
+  parallelFor(0, chunks, options_.threads, 1, [&](int chunk) {
     const cv::Range rows(chunk * kRowsPerChunk, std::min(image.rows, (chunk + 1) * kRowsPerChunk));
     if (options_.noiseSigma_grey > 0.0)
       for (int v = rows.start; v < rows.end; ++v)

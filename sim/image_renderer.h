@@ -18,7 +18,7 @@ struct RenderOptions {
   double exposureDrift = 0.08;     // relative amplitude of the slow gain drift of each camera (0: constant gain)
   double exposurePeriod_s = 20.0;  // typical period of that drift (its sinusoids span half to twice this)
   double vignetting = 0.0;         // relative darkening at the image corners (cos^4-like fall-off; 0: none)
-  int threads = 2;                 // 1: on the calling thread; more: on OpenCV's thread pool (sim/pool_for.h)
+  int threads = 2;                 // 1: on the calling thread; more: parallelFor (graph/parallel_for.h)
 };
 
 // Where the renderer's time goes: wall seconds summed over the images rendered.

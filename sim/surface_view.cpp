@@ -8,8 +8,8 @@
 #include <string>
 
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/parallel_for.h"
 #include "lrsvo/sim/footprint.h"
-#include "lrsvo/sim/pool_for.h"
 
 namespace lrsvo {
 namespace {
@@ -96,7 +96,7 @@ void SurfaceView::solveGroundGrid(int threads) {
   footprintPerDepth_.resize(groundDepth_.size());
   // An exception must not leave a parallel region: each row keeps its own, the first is rethrown.
   std::vector<std::exception_ptr> failures(nodesV_);
-  poolFor(0, nodesV_, threads, [&](int j) {
+  parallelFor(0, nodesV_, threads, 1, [&](int j) {
     try {
       for (int i = 0; i < nodesU_; ++i) {
         const Eigen::Vector3d direction = ray(i * kGroundGrid_px, j * kGroundGrid_px);

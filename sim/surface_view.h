@@ -27,7 +27,7 @@ class SurfaceView {
 
   // Throws lrsvo::Error when a ray misses the ground (a camera below the
   // surface or seeing the horizon). The ground grid is solved in parallel
-  // when threads > 1 (sim/pool_for.h).
+  // when threads > 1 (graph/parallel_for.h).
   SurfaceView(const Terrain& terrain, const Camera& camera, const Eigen::Isometry3d& cameraFromWorld, int threads = 1);
 
   // The surface point seen at pixel (u, v); its tree and building pointers

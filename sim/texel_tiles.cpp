@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "lrsvo/graph/error.h"
-#include "lrsvo/sim/pool_for.h"
+#include "lrsvo/graph/parallel_for.h"
 
 namespace lrsvo {
 std::size_t TexelTiles::KeyHash::operator()(const Key& k) const {
@@ -162,8 +162,8 @@ void TexelTiles::require(const std::vector<TexelRegion>& regions, int threads, c
   for (std::size_t begin = 0; begin < missing.size();) {
     std::size_t end = begin;
     while (end < missing.size() && missing[end].first.level == missing[begin].first.level) ++end;
-    poolFor(static_cast<int>(begin), static_cast<int>(end), threads,
-            [&](int i) { fill(*missing[i].second, missing[i].first); });
+    parallelFor(static_cast<int>(begin), static_cast<int>(end), threads, 1,
+                [&](int i) { fill(*missing[i].second, missing[i].first); });
     begin = end;
   }
   std::erase_if(tiles_, [&](const auto& entry) { return entry.second->lastUsed <= images_ - keep_; });

@@ -49,7 +49,7 @@ class TexelTiles {
   TexelTiles(RowFunction function, double baseTexel_m, int keepImages = 8);
 
   // Fills every tile that samples inside the regions will read, in parallel
-  // when threads > 1 (sim/pool_for.h; `function` is called from every
+  // when threads > 1 (graph/parallel_for.h; `function` is called from every
   // thread); tiles no image has read for keepImages calls are dropped. Not
   // safe while another thread samples. rowDirection is the world direction
   // (x, y) in which the image's rows run: the tiles are laid out so that
