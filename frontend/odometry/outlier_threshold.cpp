@@ -23,10 +23,11 @@ double outlierThreshold_px(const std::vector<double>& errors_px, const OutlierTe
 void validate(const OutlierTestOptions& options) {
   if (!(std::isfinite(options.sigmas) && options.sigmas >= 0.0 && std::isfinite(options.maxThreshold_px) &&
         options.minThreshold_px > 0.0 && options.minThreshold_px <= options.maxThreshold_px &&
-        options.maxRejectedTrackFraction >= 0.0 && options.maxRejectedTrackFraction <= 1.0))
+        options.maxRejectedTrackFraction >= 0.0 && options.maxRejectedTrackFraction <= 1.0 &&
+        options.minImageErrors >= 1))
     throw Error(
-        "outlier test: sigmas must be >= 0, 0 < minThreshold_px <= maxThreshold_px and maxRejectedTrackFraction in "
-        "[0, 1], all finite");
+        "outlier test: sigmas must be >= 0, 0 < minThreshold_px <= maxThreshold_px, maxRejectedTrackFraction in "
+        "[0, 1], all finite, and minImageErrors >= 1");
 }
 
 }  // namespace lrsvo

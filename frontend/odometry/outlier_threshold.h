@@ -18,6 +18,10 @@ struct OutlierTestOptions {
   // of the window's tracks, the solve, not the tracks, is wrong, and
   // maxThreshold_px alone applies (findWindowOutliers).
   double maxRejectedTrackFraction = 0.2;
+  // An image with at least this many errors estimates its own noise
+  // (findWindowOutliers): the median of n Rayleigh lengths has a relative
+  // std of about 0.72 / sqrt(n), 13 % at 30.
+  int minImageErrors = 30;
 };
 
 // The noise per image axis of 2-D reprojection errors of length error_px,
@@ -31,8 +35,8 @@ double robustNoiseSigma_px(std::vector<double> errors_px);
 // on invalid options (validate() below).
 double outlierThreshold_px(const std::vector<double>& errors_px, const OutlierTestOptions& options);
 
-// Throws lrsvo::Error unless sigmas >= 0, 0 < minThreshold_px <= maxThreshold_px and
-// maxRejectedTrackFraction in [0, 1], all finite.
+// Throws lrsvo::Error unless sigmas >= 0, 0 < minThreshold_px <= maxThreshold_px,
+// maxRejectedTrackFraction in [0, 1], all finite, and minImageErrors >= 1.
 void validate(const OutlierTestOptions& options);
 
 }  // namespace lrsvo

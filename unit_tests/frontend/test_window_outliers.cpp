@@ -39,6 +39,56 @@ TEST(WindowOutliers, BaseOutlierCondemnsItsTrackSecondaryOutlierOnlyItsObservati
   EXPECT_EQ(outliers.secondaryOutliers, (std::set<std::pair<int, int>>{{3, 9}}));
 }
 
+// 100 tracks seen by the base camera in 10 keyframes, every error
+// quietError_px but those of keyframe 9, loudError_px.
+std::vector<ProjectionError> windowWithOneLoudImage(double quietError_px, double loudError_px) {
+  std::vector<ProjectionError> errors;
+  for (int keyframe = 0; keyframe < 10; ++keyframe)
+    for (int track = 0; track < 100; ++track)
+      errors.push_back(errorOf(keyframe, 0, track, keyframe == 9 ? loudError_px : quietError_px));
+  return errors;
+}
+
+TEST(WindowOutliers, AnImageWhoseErrorsAreAllLargerIsHeldToItsOwnNoise) {
+  // Keyframe 9's errors of 0.6 px pass the window's threshold (the 0.5 px
+  // floor: its median is 0.1 px), so the window's test would condemn every
+  // track. Its own errors set its threshold at 4 sigma of 0.6 px, 2.04 px: a
+  // track 3 px off there still goes.
+  std::vector<ProjectionError> errors = windowWithOneLoudImage(0.1, 0.6);
+  errors.push_back(errorOf(9, 0, 100, 3.0));
+  const WindowOutliers outliers = findWindowOutliers(errors, 1, OutlierTestOptions{}, true);
+
+  EXPECT_EQ(outliers.thresholds_px, std::vector<double>{0.5});
+  EXPECT_NEAR(outliers.imageThresholds_px.at({9, 0}), kFourSigmaPerMedian * 0.6, 1e-3);
+  EXPECT_EQ(outliers.imageThresholds_px.at({0, 0}), 0.5);
+  EXPECT_EQ(outliers.rejectedTracks, (std::set<int>{100}));
+}
+
+TEST(WindowOutliers, AnImageIsNeverHeldBelowItsCamerasThreshold) {
+  // Keyframe 0's errors are 0.1 px (4 sigma 0.34 px, 0.5 px at the floor),
+  // the window's 0.2 px (4 sigma 0.68 px): keyframe 0 is held to 0.68 px.
+  std::vector<ProjectionError> errors = windowWithOneLoudImage(0.2, 0.2);
+  for (int track = 0; track < 100; ++track) errors[static_cast<std::size_t>(track)].error_px = 0.1;
+  errors[0].error_px = 0.6;  // keyframe 0, track 0: above its image's 4 sigma, below the window's
+  const WindowOutliers outliers = findWindowOutliers(errors, 1, OutlierTestOptions{}, true);
+  EXPECT_NEAR(outliers.thresholds_px[0], kFourSigmaPerMedian * 0.2, 1e-3);
+  EXPECT_EQ(outliers.imageThresholds_px.at({0, 0}), outliers.thresholds_px[0]);
+  EXPECT_TRUE(outliers.rejectedTracks.empty());
+}
+
+TEST(WindowOutliers, AnImageWithFewErrorsIsHeldToItsCamerasThreshold) {
+  // Keyframe 9 keeps 29 of its observations, one fewer than an image needs to
+  // estimate its own noise: the window's threshold condemns them all.
+  std::vector<ProjectionError> errors = windowWithOneLoudImage(0.1, 0.6);
+  std::erase_if(errors, [](const ProjectionError& e) { return e.frame == 9 && e.observation.track >= 29; });
+  const WindowOutliers outliers = findWindowOutliers(errors, 1, OutlierTestOptions{}, true);
+  EXPECT_EQ(outliers.imageThresholds_px.at({9, 0}), 0.5);
+  EXPECT_EQ(outliers.rejectedTracks.size(), 29u);
+
+  const WindowOutliers fewerNeeded = findWindowOutliers(errors, 1, {.minImageErrors = 29}, true);
+  EXPECT_TRUE(fewerNeeded.rejectedTracks.empty());
+}
+
 TEST(WindowOutliers, AnUnconvergedSolveThatWouldCondemnManyTracksFallsBackToTheLargestThreshold) {
   // 30 of 100 base tracks at 2 px against a median of 0.3 px: the noise test
   // condemns 30 %, more than the 20 % an unconverged solve is trusted with.
@@ -51,6 +101,7 @@ TEST(WindowOutliers, AnUnconvergedSolveThatWouldCondemnManyTracksFallsBackToTheL
 
   const WindowOutliers unconverged = findWindowOutliers(errors, 1, options, false);
   EXPECT_EQ(unconverged.thresholds_px, std::vector<double>{options.maxThreshold_px});
+  EXPECT_EQ(unconverged.imageThresholds_px.at({0, 0}), options.maxThreshold_px);
   EXPECT_TRUE(unconverged.rejectedTracks.empty());
 }
 
