@@ -70,7 +70,8 @@ struct OdometryOptions {
   BundleGraphOptions bundle;
   // After each window adjustment, an observation whose reprojection error
   // exceeds the window's threshold (outlier_threshold.h: 4 sigma of the
-  // window's own noise, within 0.5-4 px) is removed, and a track with a
+  // window's own noise, within 0.5-4 px; window_outliers.h: a keyframe off as
+  // a whole loses its stereo observations instead) is removed, and a track with a
   // base-camera outlier is dropped. A frame's pose drops the tracks farther
   // than outliers.maxThreshold_px from it.
   OutlierTestOptions outliers;

@@ -7,20 +7,21 @@ namespace lrsvo {
 // How a window adjustment tells outlying observations from noise.
 struct OutlierTestOptions {
   // An observation is an outlier when its reprojection error exceeds
-  // `sigmas` times the window's own noise, estimated from its errors (a
+  // `sigmas` times the noise estimated from the errors it is judged among (a
   // Gaussian inlier's 2-D error passes 4 sigma with probability e^-8, 3e-4),
   // kept within [minThreshold_px, maxThreshold_px]. sigmas = 0: always maxThreshold_px.
   double sigmas = 4.0;
   double minThreshold_px = 0.5;  // the noise estimate of a near-perfect window cannot reject its sub-pixel errors
   double maxThreshold_px = 4.0;
-  // A solve that stopped short of convergence (at its iteration limit) may lie
-  // far from the optimum: when the test would then condemn more than this share
-  // of the window's tracks, the solve, not the tracks, is wrong, and
-  // maxThreshold_px alone applies (findWindowOutliers).
+  // The share of observations past the threshold that says something other
+  // than the tracks is wrong (findWindowOutliers): of a keyframe's base
+  // image, that the keyframe is off as a whole; of the window's tracks after
+  // a solve that stopped short of convergence (at its iteration limit), that
+  // the solve is, and maxThreshold_px alone applies.
   double maxRejectedTrackFraction = 0.2;
-  // An image with at least this many errors estimates its own noise
-  // (findWindowOutliers): the median of n Rayleigh lengths has a relative
-  // std of about 0.72 / sqrt(n), 13 % at 30.
+  // An image with at least this many errors may be judged off as a whole
+  // and estimate its own noise (findWindowOutliers): the median of n
+  // Rayleigh lengths has a relative std of about 0.72 / sqrt(n), 13 % at 30.
   int minImageErrors = 30;
 };
 

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
 
 #include "lrsvo/frontend/odometry/window_outliers.h"
@@ -39,54 +40,83 @@ TEST(WindowOutliers, BaseOutlierCondemnsItsTrackSecondaryOutlierOnlyItsObservati
   EXPECT_EQ(outliers.secondaryOutliers, (std::set<std::pair<int, int>>{{3, 9}}));
 }
 
-// 100 tracks seen by the base camera in 10 keyframes, every error
-// quietError_px but those of keyframe 9, loudError_px.
-std::vector<ProjectionError> windowWithOneLoudImage(double quietError_px, double loudError_px) {
+// 100 tracks seen by both cameras of a stereo rig in 10 keyframes, every
+// error quietError_px but those of keyframe 9, loudError_px.
+std::vector<ProjectionError> windowWithOneLoudKeyframe(double quietError_px, double loudError_px) {
   std::vector<ProjectionError> errors;
   for (int keyframe = 0; keyframe < 10; ++keyframe)
     for (int track = 0; track < 100; ++track)
-      errors.push_back(errorOf(keyframe, 0, track, keyframe == 9 ? loudError_px : quietError_px));
+      for (int camera = 0; camera < 2; ++camera)
+        errors.push_back(errorOf(keyframe, camera, track, keyframe == 9 ? loudError_px : quietError_px));
   return errors;
 }
 
-TEST(WindowOutliers, AnImageWhoseErrorsAreAllLargerIsHeldToItsOwnNoise) {
-  // Keyframe 9's errors of 0.6 px pass the window's threshold (the 0.5 px
+std::set<std::pair<int, int>> secondaryObservationsOf(int keyframe, int tracks) {
+  std::set<std::pair<int, int>> observations;
+  for (int track = 0; track < tracks; ++track) observations.insert({keyframe, track});
+  return observations;
+}
+
+TEST(WindowOutliers, AKeyframeOffAsAWholeLosesItsStereoNotItsTracks) {
+  // Keyframe 9's errors of 0.6 px all pass the window's threshold (the 0.5 px
   // floor: its median is 0.1 px), so the window's test would condemn every
-  // track. Its own errors set its threshold at 4 sigma of 0.6 px, 2.04 px: a
-  // track 3 px off there still goes.
-  std::vector<ProjectionError> errors = windowWithOneLoudImage(0.1, 0.6);
+  // track. Its base image is held to 4 sigma of its own 0.6 px, 2.04 px: a
+  // track 3 px off there still goes, and its secondary observations go.
+  std::vector<ProjectionError> errors = windowWithOneLoudKeyframe(0.1, 0.6);
   errors.push_back(errorOf(9, 0, 100, 3.0));
-  const WindowOutliers outliers = findWindowOutliers(errors, 1, OutlierTestOptions{}, true);
+  const WindowOutliers outliers = findWindowOutliers(errors, 2, OutlierTestOptions{}, true);
 
-  EXPECT_EQ(outliers.thresholds_px, std::vector<double>{0.5});
-  EXPECT_NEAR(outliers.imageThresholds_px.at({9, 0}), kFourSigmaPerMedian * 0.6, 1e-3);
-  EXPECT_EQ(outliers.imageThresholds_px.at({0, 0}), 0.5);
+  EXPECT_EQ(outliers.thresholds_px, (std::vector<double>{0.5, 0.5}));
+  ASSERT_EQ(outliers.offKeyframes.size(), 1u);
+  EXPECT_NEAR(outliers.offKeyframes.at(9), kFourSigmaPerMedian * 0.6, 1e-3);
   EXPECT_EQ(outliers.rejectedTracks, (std::set<int>{100}));
+  EXPECT_EQ(outliers.secondaryOutliers, secondaryObservationsOf(9, 100));
 }
 
-TEST(WindowOutliers, AnImageIsNeverHeldBelowItsCamerasThreshold) {
-  // Keyframe 0's errors are 0.1 px (4 sigma 0.34 px, 0.5 px at the floor),
-  // the window's 0.2 px (4 sigma 0.68 px): keyframe 0 is held to 0.68 px.
-  std::vector<ProjectionError> errors = windowWithOneLoudImage(0.2, 0.2);
-  for (int track = 0; track < 100; ++track) errors[static_cast<std::size_t>(track)].error_px = 0.1;
-  errors[0].error_px = 0.6;  // keyframe 0, track 0: above its image's 4 sigma, below the window's
-  const WindowOutliers outliers = findWindowOutliers(errors, 1, OutlierTestOptions{}, true);
-  EXPECT_NEAR(outliers.thresholds_px[0], kFourSigmaPerMedian * 0.2, 1e-3);
-  EXPECT_EQ(outliers.imageThresholds_px.at({0, 0}), outliers.thresholds_px[0]);
-  EXPECT_TRUE(outliers.rejectedTracks.empty());
+TEST(WindowOutliers, AKeyframeWithAFifthOfItsErrorsPastTheThresholdIsOffAsAWhole) {
+  // Keyframe 9's errors are 0.3 px but for its first `past` tracks, 0.8 px,
+  // past the window's 0.5 px threshold: up to a fifth of them, each is
+  // condemned; beyond, the keyframe is off as a whole (its own 4 sigma,
+  // 1.02 px, keeps them) and loses its secondary observations.
+  for (const int past : {20, 21}) {
+    SCOPED_TRACE("past " + std::to_string(past));
+    std::vector<ProjectionError> errors = windowWithOneLoudKeyframe(0.1, 0.3);
+    for (ProjectionError& error : errors)
+      if (error.frame == 9 && error.observation.camera == 0 && error.observation.track < past) error.error_px = 0.8;
+    const WindowOutliers outliers = findWindowOutliers(errors, 2, OutlierTestOptions{}, true);
+    if (past == 20) {
+      EXPECT_TRUE(outliers.offKeyframes.empty());
+      EXPECT_EQ(outliers.rejectedTracks.size(), 20u);
+      EXPECT_TRUE(outliers.secondaryOutliers.empty());
+    } else {
+      ASSERT_EQ(outliers.offKeyframes.size(), 1u);
+      EXPECT_NEAR(outliers.offKeyframes.at(9), kFourSigmaPerMedian * 0.3, 1e-3);
+      EXPECT_TRUE(outliers.rejectedTracks.empty());
+      EXPECT_EQ(outliers.secondaryOutliers, secondaryObservationsOf(9, 100));
+    }
+  }
 }
 
-TEST(WindowOutliers, AnImageWithFewErrorsIsHeldToItsCamerasThreshold) {
+TEST(WindowOutliers, AKeyframeWithFewErrorsIsNeverOffAsAWhole) {
   // Keyframe 9 keeps 29 of its observations, one fewer than an image needs to
   // estimate its own noise: the window's threshold condemns them all.
-  std::vector<ProjectionError> errors = windowWithOneLoudImage(0.1, 0.6);
+  std::vector<ProjectionError> errors = windowWithOneLoudKeyframe(0.1, 0.6);
   std::erase_if(errors, [](const ProjectionError& e) { return e.frame == 9 && e.observation.track >= 29; });
-  const WindowOutliers outliers = findWindowOutliers(errors, 1, OutlierTestOptions{}, true);
-  EXPECT_EQ(outliers.imageThresholds_px.at({9, 0}), 0.5);
+  const WindowOutliers outliers = findWindowOutliers(errors, 2, OutlierTestOptions{}, true);
+  EXPECT_TRUE(outliers.offKeyframes.empty());
   EXPECT_EQ(outliers.rejectedTracks.size(), 29u);
 
-  const WindowOutliers fewerNeeded = findWindowOutliers(errors, 1, {.minImageErrors = 29}, true);
+  const WindowOutliers fewerNeeded = findWindowOutliers(errors, 2, {.minImageErrors = 29}, true);
+  EXPECT_EQ(fewerNeeded.offKeyframes.size(), 1u);
   EXPECT_TRUE(fewerNeeded.rejectedTracks.empty());
+}
+
+TEST(WindowOutliers, AMonocularWindowHasNoStereoPairToBlame) {
+  std::vector<ProjectionError> errors = windowWithOneLoudKeyframe(0.1, 0.6);
+  std::erase_if(errors, [](const ProjectionError& e) { return e.observation.camera != 0; });
+  const WindowOutliers outliers = findWindowOutliers(errors, 1, OutlierTestOptions{}, true);
+  EXPECT_TRUE(outliers.offKeyframes.empty());
+  EXPECT_EQ(outliers.rejectedTracks.size(), 100u);
 }
 
 TEST(WindowOutliers, AnUnconvergedSolveThatWouldCondemnManyTracksFallsBackToTheLargestThreshold) {
@@ -101,7 +131,6 @@ TEST(WindowOutliers, AnUnconvergedSolveThatWouldCondemnManyTracksFallsBackToTheL
 
   const WindowOutliers unconverged = findWindowOutliers(errors, 1, options, false);
   EXPECT_EQ(unconverged.thresholds_px, std::vector<double>{options.maxThreshold_px});
-  EXPECT_EQ(unconverged.imageThresholds_px.at({0, 0}), options.maxThreshold_px);
   EXPECT_TRUE(unconverged.rejectedTracks.empty());
 }
 

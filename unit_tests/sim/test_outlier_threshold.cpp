@@ -1,4 +1,4 @@
-// The window's outlier test: a threshold that follows the window's own noise,
+// The window's outlier test: a threshold that follows the errors' own noise,
 // and what it catches that a fixed 4 px threshold lets through.
 
 #include <cmath>
@@ -140,13 +140,13 @@ TEST(OutlierThreshold, WindowRejectsSlidingTracksThatFourPixelsKeep) {
 }
 
 // A jolt of the rig at one keyframe: its secondary camera's pixels are all
-// 2.4 px off in y, more than the one S the window shares can
-// follow. That keyframe's pose splits the miss between its two cameras, so
-// its base observations are off together, by up to about half of it, past
-// the window's threshold (0.8 px here). The image's own errors say so, and
-// its tracks stay within the bound good tracks keep above; held to the
-// window's threshold alone (minImageErrors past any image's count), they
-// break it.
+// 2.4 px off in y, more than the one S the window shares can follow. That
+// keyframe's pose splits the miss between its two cameras, so its base
+// observations are off together, many past the window's threshold (0.8 px
+// here). Once more than a fifth of them are, the keyframe is off as a whole:
+// it loses its stereo observations, and its tracks stay. Held to the
+// window's threshold alone (minImageErrors past any image's count), two
+// fifths and more of them are condemned.
 TEST(OutlierThreshold, AKeyframeWhoseStereoPairTheWindowsSMissesKeepsItsTracks) {
   for (const std::uint64_t seed : {11u, 21u, 31u}) {
     SCOPED_TRACE("seed " + std::to_string(seed));
@@ -170,13 +170,15 @@ TEST(OutlierThreshold, AKeyframeWhoseStereoPairTheWindowsSMissesKeepsItsTracks) 
       for (int track : rejected) n += static_cast<int>(joltedTracks.count(track));
       return n;
     };
-    const int perImage = condemnedOfJolted(rejectedAlongTheFlight(sequence, {}));
+    const int offAsAWhole = condemnedOfJolted(rejectedAlongTheFlight(sequence, {}));
     const int windowOnly = condemnedOfJolted(rejectedAlongTheFlight(sequence, {.minImageErrors = 1 << 30}));
-    std::printf("seed %d: tracks of the jolted keyframe condemned: %d of %zu per image, %d by the window's threshold\n",
-                static_cast<int>(seed), perImage, joltedTracks.size(), windowOnly);
+    std::printf("seed %d: tracks of the jolted keyframe condemned: %d of %zu, %d by the window's threshold alone\n",
+                static_cast<int>(seed), offAsAWhole, joltedTracks.size(), windowOnly);
     ASSERT_GT(joltedTracks.size(), 100u);
-    EXPECT_LE(perImage, static_cast<int>(joltedTracks.size()) / 20);  // the good-track bound above
-    EXPECT_GT(windowOnly, static_cast<int>(joltedTracks.size()) / 20);
+    // The share of an image the window's test may condemn before the keyframe counts as off as a whole.
+    const double tolerated = OutlierTestOptions{}.maxRejectedTrackFraction * static_cast<double>(joltedTracks.size());
+    EXPECT_LE(offAsAWhole, tolerated);
+    EXPECT_GT(windowOnly, tolerated);
   }
 }
 
