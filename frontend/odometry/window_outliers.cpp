@@ -8,10 +8,11 @@
 namespace lrsvo {
 namespace {
 
-// Whether more than `fraction` of an image's errors pass `threshold_px`.
-bool mostlyPast(const std::vector<double>& errors_px, double threshold_px, double fraction) {
-  const auto past = std::count_if(errors_px.begin(), errors_px.end(), [&](double e) { return e > threshold_px; });
-  return static_cast<double>(past) > fraction * static_cast<double>(errors_px.size());
+// Whether `condemned` of `total` is more than the test is trusted with
+// (OutlierTestOptions::maxRejectedTrackFraction): then something other than
+// the tracks is wrong.
+bool condemnsTooMany(std::size_t condemned, std::size_t total, const OutlierTestOptions& options) {
+  return static_cast<double>(condemned) > options.maxRejectedTrackFraction * static_cast<double>(total);
 }
 
 void classify(const std::vector<ProjectionError>& errors, WindowOutliers& outliers) {
@@ -20,14 +21,11 @@ void classify(const std::vector<ProjectionError>& errors, WindowOutliers& outlie
   for (const ProjectionError& error : errors) {
     const int camera = error.observation.camera;
     const auto off = outliers.offKeyframes.find(error.frame);
-    if (off != outliers.offKeyframes.end()) {
-      if (camera != 0)
-        outliers.secondaryOutliers.insert({error.frame, error.observation.track});
-      else if (error.error_px > off->second)
-        outliers.rejectedTracks.insert(error.observation.track);
-      continue;
-    }
-    if (error.error_px <= outliers.thresholds_px[static_cast<std::size_t>(camera)]) continue;
+    const bool offKeyframe = off != outliers.offKeyframes.end();
+    // An off keyframe's secondary observations all go; its base ones face its own threshold.
+    const double threshold_px =
+        offKeyframe && camera == 0 ? off->second : outliers.thresholds_px[static_cast<std::size_t>(camera)];
+    if (!(offKeyframe && camera != 0) && error.error_px <= threshold_px) continue;
     if (camera == 0)
       outliers.rejectedTracks.insert(error.observation.track);
     else
@@ -40,7 +38,6 @@ void classify(const std::vector<ProjectionError>& errors, WindowOutliers& outlie
 WindowOutliers findWindowOutliers(const std::vector<ProjectionError>& errors, int cameraCount,
                                   const OutlierTestOptions& options, bool solveConverged) {
   if (cameraCount < 1) throw Error("findWindowOutliers: need at least the base camera");
-  validate(options);
   std::vector<std::vector<double>> errorsByCamera(static_cast<std::size_t>(cameraCount));
   std::map<int, std::vector<double>> baseErrorsByKeyframe;
   std::set<int> baseTracks;
@@ -59,13 +56,15 @@ WindowOutliers findWindowOutliers(const std::vector<ProjectionError>& errors, in
   for (const std::vector<double>& cameraErrors : errorsByCamera)
     outliers.thresholds_px.push_back(outlierThreshold_px(cameraErrors, options));
   if (cameraCount > 1)
-    for (const auto& [keyframe, baseErrors] : baseErrorsByKeyframe)
+    for (const auto& [keyframe, baseErrors] : baseErrorsByKeyframe) {
+      const auto past =
+          std::count_if(baseErrors.begin(), baseErrors.end(), [&](double e) { return e > outliers.thresholds_px[0]; });
       if (static_cast<int>(baseErrors.size()) >= options.minImageErrors &&
-          mostlyPast(baseErrors, outliers.thresholds_px[0], options.maxRejectedTrackFraction))
+          condemnsTooMany(static_cast<std::size_t>(past), baseErrors.size(), options))
         outliers.offKeyframes[keyframe] = std::max(outliers.thresholds_px[0], outlierThreshold_px(baseErrors, options));
+    }
   classify(errors, outliers);
-  if (!solveConverged &&
-      static_cast<double>(outliers.rejectedTracks.size()) > options.maxRejectedTrackFraction * baseTracks.size()) {
+  if (!solveConverged && condemnsTooMany(outliers.rejectedTracks.size(), baseTracks.size(), options)) {
     outliers.thresholds_px.assign(outliers.thresholds_px.size(), options.maxThreshold_px);
     outliers.offKeyframes.clear();
     classify(errors, outliers);
