@@ -13,11 +13,10 @@ struct OutlierTestOptions {
   double sigmas = 4.0;
   double minThreshold_px = 0.5;  // the noise estimate of a near-perfect window cannot reject its sub-pixel errors
   double maxThreshold_px = 4.0;
-  // The share of observations past the threshold that says something other
-  // than the tracks is wrong (findWindowOutliers): of a keyframe's base
-  // image, that the keyframe is off as a whole; of the window's tracks after
-  // a solve that stopped short of convergence (at its iteration limit), that
-  // the solve is, and maxThreshold_px alone applies.
+  // The share of the window's tracks past the threshold after a solve that
+  // stopped short of convergence (at its iteration limit) that says the
+  // solve, not the tracks, is wrong: then maxThreshold_px alone applies
+  // (findWindowOutliers).
   double maxRejectedTrackFraction = 0.2;
   // An image with at least this many errors may be judged off as a whole
   // and estimate its own noise (findWindowOutliers): the median of n

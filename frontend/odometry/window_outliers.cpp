@@ -8,9 +8,8 @@
 namespace lrsvo {
 namespace {
 
-// Whether `condemned` of `total` is more than the test is trusted with
-// (OutlierTestOptions::maxRejectedTrackFraction): then something other than
-// the tracks is wrong.
+// Whether `condemned` of `total` tracks is more than the test of an
+// unconverged solve is trusted with (OutlierTestOptions::maxRejectedTrackFraction).
 bool condemnsTooMany(std::size_t condemned, std::size_t total, const OutlierTestOptions& options) {
   return static_cast<double>(condemned) > options.maxRejectedTrackFraction * static_cast<double>(total);
 }
@@ -59,8 +58,10 @@ WindowOutliers findWindowOutliers(const std::vector<ProjectionError>& errors, in
     for (const auto& [keyframe, baseErrors] : baseErrorsByKeyframe) {
       const auto past =
           std::count_if(baseErrors.begin(), baseErrors.end(), [&](double e) { return e > outliers.thresholds_px[0]; });
+      // More than half of the image past the threshold, its median error too: the test takes outliers
+      // for a minority of what it judges, so they are not the image's tracks.
       if (static_cast<int>(baseErrors.size()) >= options.minImageErrors &&
-          condemnsTooMany(static_cast<std::size_t>(past), baseErrors.size(), options))
+          2 * static_cast<std::size_t>(past) > baseErrors.size())
         outliers.offKeyframes[keyframe] = std::max(outliers.thresholds_px[0], outlierThreshold_px(baseErrors, options));
     }
   classify(errors, outliers);

@@ -27,19 +27,20 @@ struct WindowOutliers {
 // sliding over the ground behind it), so its whole track goes; a secondary
 // one is a wrong stereo match.
 //
-// A keyframe whose base image is off as a whole, more than
-// options.maxRejectedTrackFraction of its errors (at least
-// options.minImageErrors of them) past the base camera's threshold, where
-// noise puts a few in ten thousand, is a stereo pair the window's one S
-// misses: the rig jolted at that frame, and
-// the frame's pose splits the miss between its cameras, so every observation
-// of the image is off alike. That says nothing against its tracks, which the
-// window's test would condemn nearly all at once. Its secondary observations
-// go instead (the next adjustment fits its pose to the base image alone), and
-// its base image is held to the threshold its own errors give.
+// A keyframe whose base image is off as a whole, more than half of its
+// errors (at least options.minImageErrors of them) past the base camera's
+// threshold, is a stereo pair the window's one S misses: the rig jolted at
+// that frame, and the frame's pose splits the miss between its cameras, so
+// every observation of the image is off alike. The test's premise, outliers
+// a minority of the errors it judges (the median that sets the threshold
+// assumes no more), cannot hold for tracks there, and the window's test would
+// condemn most of them at once. Its secondary observations go instead (the
+// next adjustment fits its pose to the base image alone), and its base image
+// is held to the threshold its own errors give. Up to half, each error past
+// the threshold condemns its track as usual.
 //
-// When the solve did not converge and the test would condemn more than that
-// fraction of the window's tracks, the solve is
+// When the solve did not converge and the test would condemn more than
+// options.maxRejectedTrackFraction of the window's tracks, the solve is
 // suspect rather than the tracks: options.maxThreshold_px applies to every
 // observation instead.
 WindowOutliers findWindowOutliers(const std::vector<ProjectionError>& errors, int cameraCount,
