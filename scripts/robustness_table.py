@@ -15,11 +15,10 @@ the constrained one. Run from the repository's top:
     scripts/robustness_table.py --lrsvo build/bin/lrsvo --variants --only stress
 """
 import argparse
-import json
 import pathlib
-import subprocess
 import sys
-import time
+
+from lrsvo_runs import ate_percent, run_lrsvo
 
 EUROC = "../shared/data/euroc_v101_micro"
 CONDITIONS = [  # key, what, source, extra options
@@ -40,21 +39,15 @@ CONDITIONS = [  # key, what, source, extra options
 
 
 def run(lrsvo, source, extra, out):
-    start = time.monotonic()
-    result = subprocess.run([lrsvo, "run", source, "--quiet", "--no-plot", "--out", str(out), *extra],
-                            capture_output=True, text=True)
-    wall = time.monotonic() - start
-    metrics_file = out / "metrics.json"
-    if result.returncode != 0 or not metrics_file.exists():
-        error = (result.stderr.strip().splitlines() or ["?"])[-1]
-        return f"fails (exit {result.returncode}): {error[:90]}", wall
-    m = json.loads(metrics_file.read_text())
+    m, failure, wall = run_lrsvo(lrsvo, source, extra, out)
+    if m is None:
+        return failure, wall
     posed = f"{m['frames_tracked']}/{m['frames']}"
     if m.get("frames_predicted"):
         posed += f" (+{m['frames_predicted']})"
-    if "ate_rmse_m" not in m or not m.get("distance_m"):
+    ate = ate_percent(m)
+    if ate is None:
         return f"{posed} posed, no metrics", wall
-    ate = 100.0 * m["ate_rmse_m"] / m["distance_m"]
     ratio = 1.0 + m["path_length_error_percent"] / 100.0 if "path_length_error_percent" in m else float("nan")
     realigned = m.get("frames_realigned", "-")
     relocalised = m.get("frames_relocalised", "-")

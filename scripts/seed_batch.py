@@ -18,12 +18,12 @@ after `--` go to every run. Run from the repository's top:
 The scenario files each run read are written beside its outputs (OUT/<flight>_s<N>.yaml).
 """
 import argparse
-import json
 import pathlib
 import re
 import statistics
-import subprocess
 import sys
+
+from lrsvo_runs import ate_percent, run_lrsvo
 
 COMPONENTS = ("flight", "terrain", "deformation", "texture")  # the scenario's parts that draw from a seed
 
@@ -50,8 +50,8 @@ def reseeded(text, seed, name):
             component, rest = key.groups()
             pending.discard(component)
             if rest.startswith("{"):  # a flow map: its seed replaced or added
-                inner = re.sub(r"\bseed\s*:\s*[^,}]+,?\s*", "", rest[1:].rstrip().rstrip("}")).strip().rstrip(",")
-                out.append(f"{component}: {{ seed: {seed}{', ' + inner.strip() if inner.strip() else ''} }}")
+                inner = re.sub(r"\bseed\s*:\s*[^,}]+,?\s*", "", rest[1:].rstrip().rstrip("}")).strip().rstrip(",").strip()
+                out.append(f"{component}: {{ seed: {seed}{', ' + inner if inner else ''} }}")
                 continue
             if not rest:  # a block map: the seed at its first child's indentation
                 child = next((l for l in lines[index + 1:] if l.strip() and not l.lstrip().startswith("#")), "  ")
@@ -80,16 +80,12 @@ def scenario_text(source):
 
 
 def run(lrsvo, scenario, extra, out):
-    result = subprocess.run([lrsvo, "run", f"sim:{scenario}", "--quiet", "--no-plot", "--out", str(out), *extra],
-                            capture_output=True, text=True)
-    metrics = out / "metrics.json"
-    if result.returncode != 0 or not metrics.exists():
-        error = (result.stderr.strip().splitlines() or ["?"])[-1]
-        return None, f"fails (exit {result.returncode}): {error[:90]}"
-    m = json.loads(metrics.read_text())
-    if "ate_rmse_m" not in m or not m.get("distance_m"):
+    m, failure, _ = run_lrsvo(lrsvo, f"sim:{scenario}", extra, out)
+    if m is None:
+        return None, failure
+    ate = ate_percent(m)
+    if ate is None:
         return None, f"{m['frames_tracked']}/{m['frames']} posed, no metrics"
-    ate = 100.0 * m["ate_rmse_m"] / m["distance_m"]
     drift = f"{m['drift_percent']:.3f} %" if "drift_percent" in m else "–"
     return ate, f"{ate:.3f} % | {drift} | {m['frames_tracked']}/{m['frames']} | {m['segments']}"
 
