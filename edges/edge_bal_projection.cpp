@@ -1,27 +1,11 @@
 #include "lrsvo/edges/edge_bal_projection.h"
 
-#include <cmath>
-
-#include <Eigen/Geometry>
-
 #include "lrsvo/vertices/so3.h"
 
 namespace lrsvo {
 
 Eigen::Vector3d angleAxisRotate(const Eigen::Vector3d& w, const Eigen::Vector3d& x) {
-  const double theta2 = w.squaredNorm();
-  if (theta2 < 1e-20) return x + w.cross(x);  // first order near zero, as Ceres does
-  const double theta = std::sqrt(theta2);
-  return Eigen::AngleAxisd(theta, w / theta) * x;
-}
-
-void EdgeBalProjection::computeResidual(Residual& residual) const {
-  const auto& camera = vertexAs<0>()->estimate();
-  const Eigen::Vector3d P = angleAxisRotate(camera.head<3>(), vertexAs<1>()->estimate()) + camera.segment<3>(3);
-  const Eigen::Vector2d p = -P.head<2>() / P.z();
-  const double r2 = p.squaredNorm();
-  const double distortion = 1.0 + r2 * (camera[7] + camera[8] * r2);
-  residual = camera[6] * distortion * p - measurement_;
+  return rotateByAngleAxis<double>(w, x);
 }
 
 void EdgeBalProjection::computeJacobians() {

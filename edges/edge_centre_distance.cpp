@@ -2,10 +2,6 @@
 
 namespace lrsvo {
 
-void EdgeCentreDistance::computeResidual(Residual& residual) const {
-  residual[0] = (vertexAs<1>()->centre() - vertexAs<0>()->centre()).norm() - measurement_[0];
-}
-
 void EdgeCentreDistance::computeJacobians() {
   // Under VertexPose's update the centre C = -R^T t moves by -R^T dt and not
   // at all with the rotation: C' = -R^T Exp(-dphi) (Exp(dphi) t + dt).

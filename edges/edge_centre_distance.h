@@ -1,6 +1,8 @@
 #pragma once
 
-#include "lrsvo/graph/base_edge.h"
+#include <cmath>
+
+#include "lrsvo/graph/autodiff_edge.h"
 #include "lrsvo/vertices/vertex_pose.h"
 
 namespace lrsvo {
@@ -10,11 +12,18 @@ namespace lrsvo {
 // monocular map (docs/method.md, long-range initialisation: the first pair at unit
 // distance) while leaving both poses' rotations and the direction of travel
 // free, which fixing the second pose outright would not.
-class EdgeCentreDistance : public BaseEdge<1, VertexPose, VertexPose> {
+class EdgeCentreDistance : public AutoDiffEdge<EdgeCentreDistance, 1, VertexPose, VertexPose> {
  public:
   static constexpr const char* kTypeTag = "CENTRE_DISTANCE";
   const char* typeTag() const override { return kTypeTag; }
-  void computeResidual(Residual& residual) const override;
+  template <typename T>
+  void residual(const RigidState<T>& a, const RigidState<T>& b, Eigen::Matrix<T, 1, 1>& r) const {
+    using std::sqrt;
+    // C = -R^T t
+    const Eigen::Matrix<T, 3, 1> difference =
+        a.rotation.transpose() * a.translation - b.rotation.transpose() * b.translation;
+    r[0] = sqrt(difference.squaredNorm()) - measurement_[0];
+  }
   void computeJacobians() override;
 };
 

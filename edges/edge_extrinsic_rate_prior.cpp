@@ -2,10 +2,6 @@
 
 namespace lrsvo {
 
-void EdgeExtrinsicRatePrior::computeResidual(Residual& residual) const {
-  residual = vertexAs<0>()->estimate() - measurement_;
-}
-
 void EdgeExtrinsicRatePrior::computeJacobians() { jacobian<0>().setIdentity(); }
 
 }  // namespace lrsvo

@@ -4,11 +4,6 @@
 
 namespace lrsvo {
 
-void EdgeProjectBase::computeResidual(Residual& residual) const {
-  const VertexPose& pose = *vertexAs<0>();
-  residual = intrinsics_.project(pose.rotation() * vertexAs<1>()->estimate() + pose.translation()) - measurement_;
-}
-
 void EdgeProjectBase::computeJacobians() {
   const VertexPose& pose = *vertexAs<0>();
   const Eigen::Vector3d pointInCamera = pose.rotation() * vertexAs<1>()->estimate() + pose.translation();

@@ -23,11 +23,6 @@ Eigen::Isometry3d EdgeProjectHeldView::cameraFromWorld(double s) const {
   return pose;
 }
 
-void EdgeProjectHeldView::computeResidual(Residual& residual) const {
-  const Eigen::Vector3d centre = origin_ + vertexAs<1>()->kappa() * offset_;
-  residual = intrinsics_.project(rotation_ * (vertexAs<0>()->estimate() - centre)) - measurement_;
-}
-
 void EdgeProjectHeldView::computeJacobians() {
   const Eigen::Vector3d centre = origin_ + vertexAs<1>()->kappa() * offset_;
   const Eigen::Matrix<double, 2, 3> dxdX =

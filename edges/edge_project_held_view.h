@@ -3,7 +3,7 @@
 #include <Eigen/Geometry>
 
 #include "lrsvo/edges/pinhole.h"
-#include "lrsvo/graph/base_edge.h"
+#include "lrsvo/graph/autodiff_edge.h"
 #include "lrsvo/vertices/vertex_point3.h"
 #include "lrsvo/vertices/vertex_scale.h"
 
@@ -14,8 +14,8 @@ namespace lrsvo {
 // map's scale s about a fixed origin: C = origin + s * offset,
 // x = pi(K R (X - C)). The held views keep the window's map from tilting (the
 // long-range bas-relief ambiguity) without also fixing its scale, which the
-// stereo observations keep estimating. Vertices: the point, and s.
-class EdgeProjectHeldView : public BaseEdge<2, VertexPoint3, VertexScale> {
+// stereo observations keep estimating. Vertices: the point, and s. Analytic Jacobians.
+class EdgeProjectHeldView : public AutoDiffEdge<EdgeProjectHeldView, 2, VertexPoint3, VertexScale> {
  public:
   static constexpr const char* kTypeTag = "PROJECT_HELD_VIEW";
   EdgeProjectHeldView() = default;
@@ -26,7 +26,13 @@ class EdgeProjectHeldView : public BaseEdge<2, VertexPoint3, VertexScale> {
   // The held view's pose at scale s.
   Eigen::Isometry3d cameraFromWorld(double s) const;
   const char* typeTag() const override { return kTypeTag; }
-  void computeResidual(Residual& residual) const override;
+  template <typename T>
+  void residual(const Eigen::Matrix<T, 3, 1>& point, const Eigen::Matrix<T, 1, 1>& scale,
+                Eigen::Matrix<T, 2, 1>& r) const {
+    const Eigen::Matrix<T, 3, 1> centre = origin_.cast<T>() + scale[0] * offset_.cast<T>();
+    const Eigen::Matrix<T, 3, 1> pointInCamera = rotation_.cast<T>() * (point - centre);
+    r = intrinsics_.projectAs(pointInCamera) - measurement_.cast<T>();
+  }
   void computeJacobians() override;
 
  protected:

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "lrsvo/edges/secondary_projection.h"
-#include "lrsvo/graph/base_edge.h"
+#include "lrsvo/graph/autodiff_edge.h"
 #include "lrsvo/vertices/vertex_point3.h"
 #include "lrsvo/vertices/vertex_scale.h"
 
@@ -9,8 +9,9 @@ namespace lrsvo {
 
 // Projection into secondary camera k >= 1 through its extrinsic, shared by
 // every pose of the window (docs/method.md, eq. 5 with kappa = 1):
-// x = pi(K_k R_s (R X + t - c)).
-class EdgeProjectSecondary : public BaseEdge<2, VertexPose, VertexPoint3, VertexStereoExtrinsic> {
+// x = pi(K_k R_s (R X + t - c)). Analytic Jacobians.
+class EdgeProjectSecondary
+    : public AutoDiffEdge<EdgeProjectSecondary, 2, VertexPose, VertexPoint3, VertexStereoExtrinsic> {
  public:
   static constexpr const char* kTypeTag = "PROJECT_SECONDARY";
   EdgeProjectSecondary() = default;
@@ -18,7 +19,11 @@ class EdgeProjectSecondary : public BaseEdge<2, VertexPose, VertexPoint3, Vertex
 
   const SecondaryCamera& camera() const { return camera_; }
   const char* typeTag() const override { return kTypeTag; }
-  void computeResidual(Residual& residual) const override;
+  template <typename T>
+  void residual(const RigidState<T>& pose, const Eigen::Matrix<T, 3, 1>& point, const ExtrinsicState<T>& extrinsic,
+                Eigen::Matrix<T, 2, 1>& r) const {
+    r = projectSecondary(pose, point, extrinsic, T(1.0), camera_.intrinsics) - measurement_.cast<T>();
+  }
   void computeJacobians() override;
 
  protected:
@@ -31,7 +36,8 @@ class EdgeProjectSecondary : public BaseEdge<2, VertexPose, VertexPoint3, Vertex
 
 // The same with the scale kappa of a monocular start as a fourth vertex:
 // x = pi(K_k R_s (R X + t - c / kappa)) (docs/method.md, long-range initialisation).
-class EdgeProjectSecondaryScaled : public BaseEdge<2, VertexPose, VertexPoint3, VertexStereoExtrinsic, VertexScale> {
+class EdgeProjectSecondaryScaled
+    : public AutoDiffEdge<EdgeProjectSecondaryScaled, 2, VertexPose, VertexPoint3, VertexStereoExtrinsic, VertexScale> {
  public:
   static constexpr const char* kTypeTag = "PROJECT_SECONDARY_SCALED";
   EdgeProjectSecondaryScaled() = default;
@@ -39,7 +45,11 @@ class EdgeProjectSecondaryScaled : public BaseEdge<2, VertexPose, VertexPoint3, 
 
   const SecondaryCamera& camera() const { return camera_; }
   const char* typeTag() const override { return kTypeTag; }
-  void computeResidual(Residual& residual) const override;
+  template <typename T>
+  void residual(const RigidState<T>& pose, const Eigen::Matrix<T, 3, 1>& point, const ExtrinsicState<T>& extrinsic,
+                const Eigen::Matrix<T, 1, 1>& scale, Eigen::Matrix<T, 2, 1>& r) const {
+    r = projectSecondary(pose, point, extrinsic, scale[0], camera_.intrinsics) - measurement_.cast<T>();
+  }
   void computeJacobians() override;
 
  protected:

@@ -28,14 +28,14 @@ const VertexStereoExtrinsic& EdgeProjectSecondaryDrifting::extrinsicNow() const 
 }
 
 void EdgeProjectSecondaryDrifting::computeResidual(Residual& residual) const {
-  residual =
-      projectSecondary(*vertexAs<0>(), vertexAs<1>()->estimate(), extrinsicNow(), 1.0, camera_.intrinsics, nullptr) -
-      measurement_;
+  residual = projectSecondary(vertexAs<0>()->state(), vertexAs<1>()->estimate(), extrinsicNow().state(), 1.0,
+                              camera_.intrinsics) -
+             measurement_;
 }
 
 void EdgeProjectSecondaryDrifting::computeJacobians() {
-  SecondaryProjectionJacobians j;
-  projectSecondary(*vertexAs<0>(), vertexAs<1>()->estimate(), extrinsicNow(), 1.0, camera_.intrinsics, &j);
+  const SecondaryProjectionJacobians j =
+      secondaryProjectionJacobians(*vertexAs<0>(), vertexAs<1>()->estimate(), extrinsicNow(), 1.0, camera_.intrinsics);
   jacobian<0>() = j.pose;
   jacobian<1>() = j.point;
   jacobian<2>() = j.extrinsic;

@@ -10,8 +10,11 @@ namespace lrsvo {
 struct PinholeIntrinsics {
   double fx = 1.0, fy = 1.0, cx = 0.0, cy = 0.0;
 
-  Eigen::Vector2d project(const Eigen::Vector3d& pointInCamera) const {
-    return {fx * pointInCamera.x() / pointInCamera.z() + cx, fy * pointInCamera.y() / pointInCamera.z() + cy};
+  Eigen::Vector2d project(const Eigen::Vector3d& pointInCamera) const { return projectAs<double>(pointInCamera); }
+  // The same in any scalar type (automatic differentiation).
+  template <typename T>
+  Eigen::Matrix<T, 2, 1> projectAs(const Eigen::Matrix<T, 3, 1>& p) const {
+    return {fx * p.x() / p.z() + cx, fy * p.y() / p.z() + cy};
   }
   // d project / d pointInCamera.
   Eigen::Matrix<double, 2, 3> projectJacobian(const Eigen::Vector3d& p) const {

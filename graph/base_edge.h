@@ -14,13 +14,15 @@
 #include "lrsvo/graph/edge.h"
 #include "lrsvo/graph/edge_io.h"
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/numeric_diff.h"
 #include "lrsvo/graph/robust_kernel.h"
 
 namespace lrsvo {
 
 // A least-squares edge with an R-dimensional residual over vertices Vs...
 // (each a BaseVertex<D>). Derived classes give computeResidual() and, for
-// speed, computeJacobians(); the default Jacobians are central differences.
+// speed and accuracy, computeJacobians() (or derive from AutoDiffEdge); the
+// default Jacobians are numeric differences (graph/numeric_diff.h).
 // The cost is 1/2 rho(r^T Omega r); blocks use whitened, kernel-weighted
 // Jacobians (IRLS: H = rho' J^T Omega J, g = rho' J^T Omega r).
 template <int R, typename... Vs>
@@ -35,7 +37,10 @@ class BaseEdge : public Edge {
   template <int K>
   using Jacobian = Eigen::Matrix<double, R, VertexType<K>::kDimension>;
 
-  BaseEdge() { vertices_.assign(kVertexCount, nullptr); }
+  BaseEdge() {
+    vertices_.assign(kVertexCount, nullptr);
+    std::apply([](auto&... jacobian) { (jacobian.setZero(), ...); }, jacobians_);
+  }
 
   int vertexCount() const final { return kVertexCount; }
   bool acceptsVertex(int k, const Vertex& vertex) const final { return kAcceptTable[k](vertex); }
@@ -70,10 +75,14 @@ class BaseEdge : public Edge {
   // Fills jacobian<K>() = d r / d delta_K for every non-fixed vertex K.
   virtual void computeJacobians() { computeNumericJacobians(); }
 
-  // Central differences through each vertex's oplus, on private copies of the
-  // vertices (safe while other edges are evaluated). The fallback, and the
-  // reference that tests check analytic Jacobians against.
+  // Numeric differences through each vertex's oplus, on private copies of the
+  // vertices (safe while other edges are evaluated), by numericDiffOptions().
+  // The fallback, and the reference that tests check analytic Jacobians against.
   void computeNumericJacobians() { numericJacobians(std::make_index_sequence<kVertexCount>{}); }
+
+  // How this edge type differentiates numerically; central differences with
+  // relative steps unless a derived type says otherwise.
+  virtual NumericDiffOptions numericDiffOptions() const { return {}; }
 
   template <int K>
   Jacobian<K>& jacobian() {
@@ -105,6 +114,9 @@ class BaseEdge : public Edge {
   }
 
   void addHessianBlock(int a, int b, double* block, int ld) const final { kBlockTable[a][b](*this, block, ld); }
+  int residualRows() const final { return R; }
+  void copyJacobianRows(int a, double* rows, int ld) const final { kRowsTable[a](*this, rows, ld); }
+  void copyResidualRows(double* residual) const final { Eigen::Map<Residual>{residual} = whitenedResidual_; }
   void addGradient(int a, double* gradient) const final { kGradientTable[a](*this, gradient); }
 
   void writeData(std::ostream& out) const override {
@@ -134,6 +146,7 @@ class BaseEdge : public Edge {
  private:
   using BlockFn = void (*)(const BaseEdge&, double*, int);
   using GradientFn = void (*)(const BaseEdge&, double*);
+  using RowsFn = void (*)(const BaseEdge&, double*, int);
   using AcceptFn = bool (*)(const Vertex&);
 
   template <int K>
@@ -169,34 +182,37 @@ class BaseEdge : public Edge {
 
   template <std::size_t... K>
   void numericJacobians(std::index_sequence<K...>) {
-    (numericJacobian<K>(), ...);
+    const NumericDiffOptions options = numericDiffOptions();
+    Residual r0 = Residual::Zero();
+    if (options.method == NumericDifference::kForward) computeResidual(r0);
+    (numericJacobian<K>(options, r0), ...);
   }
 
   // Differentiates on a private copy of the vertex, so concurrent edges never
-  // see a perturbed shared vertex.
+  // see a perturbed shared vertex. The step of coordinate d is the options'
+  // relative step times |x_d| for Euclidean vertices (whose coordinate d is
+  // parameter d), and times 1 for manifold vertices' tangent coordinates.
   template <int K>
-  void numericJacobian() {
+  void numericJacobian(const NumericDiffOptions& options, const Residual& r0) {
     Vertex* original = vertices_[K];
     if (original->fixed()) return;
     constexpr int D = VertexType<K>::kDimension;
-    constexpr double kStep = 1e-6;
     std::unique_ptr<Vertex> copy = original->clone();
     Eigen::VectorXd start(copy->estimateSize());
     copy->getEstimate(start.data());
     vertices_[K] = copy.get();
-    Eigen::Matrix<double, D, 1> delta;
-    Residual plus, minus;
+    const double relativeStep = options.step();
     for (int d = 0; d < D; ++d) {
-      delta.setZero();
-      delta[d] = kStep;
-      copy->oplus(delta.data());
-      computeResidual(plus);
-      copy->setEstimate(start.data());
-      delta[d] = -kStep;
-      copy->oplus(delta.data());
-      computeResidual(minus);
-      copy->setEstimate(start.data());
-      std::get<K>(jacobians_).col(d) = (plus - minus) / (2.0 * kStep);
+      const double magnitude = original->isEuclidean() ? std::abs(start[d]) : 0.0;
+      const double h = relativeStep * (magnitude > 0.0 ? magnitude : 1.0);
+      auto evaluate = [&](double t, Residual& residual) {
+        Eigen::Matrix<double, D, 1> delta = Eigen::Matrix<double, D, 1>::Zero();
+        delta[d] = t;
+        copy->setEstimate(start.data());
+        copy->oplus(delta.data());
+        computeResidual(residual);
+      };
+      std::get<K>(jacobians_).col(d) = numericDerivative(evaluate, r0, h, options.method);
     }
     vertices_[K] = original;
   }
@@ -221,6 +237,13 @@ class BaseEdge : public Edge {
     Eigen::Map<Gradient>(gradient).noalias() += std::get<A>(edge.jacobians_).transpose() * edge.whitenedResidual_;
   }
 
+  template <int A>
+  static void rowsImpl(const BaseEdge& edge, double* rows, int ld) {
+    // A dynamic column-major map: a fixed 1 x D type would be row-major.
+    Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>(rows, R, VertexType<A>::kDimension, Eigen::OuterStride<>(ld)) =
+        std::get<A>(edge.jacobians_);
+  }
+
   template <int A, std::size_t... B>
   static constexpr std::array<BlockFn, kVertexCount> blockRow(std::index_sequence<B...>) {
     return {&blockImpl<A, static_cast<int>(B)>...};
@@ -236,6 +259,11 @@ class BaseEdge : public Edge {
 
   static constexpr auto kBlockTable = blockTable(std::make_index_sequence<kVertexCount>{});
   static constexpr auto kGradientTable = gradientTable(std::make_index_sequence<kVertexCount>{});
+  template <std::size_t... A>
+  static constexpr std::array<RowsFn, kVertexCount> rowsTable(std::index_sequence<A...>) {
+    return {&rowsImpl<static_cast<int>(A)>...};
+  }
+  static constexpr auto kRowsTable = rowsTable(std::make_index_sequence<kVertexCount>{});
 
   Information information_ = Information::Identity();
   Information sqrtInformation_ = Information::Identity();

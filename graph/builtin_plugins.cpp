@@ -4,6 +4,7 @@ namespace lrsvo {
 
 void LinearSolver::addBuiltins(Registry<LinearSolver>& registry) {
   addDenseSolver(registry);
+  addDenseQrSolver(registry);
   addCholmodSolver(registry);
   addSchurDenseSolver(registry);
   addSchurCholmodSolver(registry);

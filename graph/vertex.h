@@ -72,6 +72,15 @@ class VectorVertex : public BaseVertex<D> {
   void oplus(const double* delta) final { setEstimateVector(estimate_ + Eigen::Map<const Estimate>(delta)); }
   bool isEuclidean() const final { return true; }
 
+  // What automatically differentiated edges read (graph/autodiff_edge.h): the
+  // state at the estimate, and the state after oplus(delta) with delta of any
+  // scalar type (dual numbers carry the derivatives through the update).
+  const Estimate& state() const { return estimate_; }
+  template <typename T>
+  Eigen::Matrix<T, D, 1> perturbed(const Eigen::Matrix<T, D, 1>& delta) const {
+    return estimate_.template cast<T>() + delta;
+  }
+
  protected:
   // Called after every change of the estimate: a derived vertex refreshes
   // what it caches from it (e.g. a rotation matrix the edges read).

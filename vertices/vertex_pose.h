@@ -3,8 +3,17 @@
 #include <Eigen/Geometry>
 
 #include "lrsvo/graph/vertex.h"
+#include "lrsvo/vertices/so3.h"
 
 namespace lrsvo {
+
+// A camera-from-world transform X_c = R X_w + t in any scalar type: what
+// automatically differentiated edges read of a VertexPose.
+template <typename T>
+struct RigidState {
+  Eigen::Matrix<T, 3, 3> rotation;
+  Eigen::Matrix<T, 3, 1> translation;
+};
 
 // A camera pose as camera-from-world T = (R, t): X_c = R X_w + t.
 // Update delta = (dt, dphi): R <- Exp(dphi) R, t <- Exp(dphi) t + dt, i.e.
@@ -28,6 +37,15 @@ class VertexPose : public BaseVertex<6> {
   // Throws lrsvo::Error unless the quaternion has a norm near 1.
   void setEstimate(const double* values) override;
   void oplus(const double* delta) override;
+
+  // For graph/autodiff_edge.h: the pose, and the pose after oplus(delta) in any scalar type.
+  RigidState<double> state() const { return {rotation_, translation_}; }
+  template <typename T>
+  RigidState<T> perturbed(const Eigen::Matrix<T, 6, 1>& delta) const {
+    const Eigen::Matrix<T, 3, 3> dR = expSO3Of<T>(delta.template tail<3>());
+    return {dR * rotation_.cast<T>(), dR * translation_.cast<T>() + delta.template head<3>()};
+  }
+
   const char* typeTag() const override { return kTypeTag; }
   std::unique_ptr<Vertex> clone() const override { return std::make_unique<VertexPose>(*this); }
 

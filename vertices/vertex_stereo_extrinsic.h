@@ -1,10 +1,37 @@
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Geometry>
 
 #include "lrsvo/graph/vertex.h"
 
 namespace lrsvo {
+
+// Rz(yaw) Ry(pitch) Rx(roll) in any scalar type.
+template <typename T>
+Eigen::Matrix<T, 3, 3> rollPitchYawRotation(const T& roll, const T& pitch, const T& yaw) {
+  using std::cos;
+  using std::sin;
+  const T cr = cos(roll), sr = sin(roll), cp = cos(pitch), sp = sin(pitch), cy = cos(yaw), sy = sin(yaw);
+  Eigen::Matrix<T, 3, 3> r;
+  r << cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr,  //
+      sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr,   //
+      -sp, cp * sr, cp * cr;
+  return r;
+}
+
+// The six extrinsic parameters s = (c, roll, pitch, yaw) with R_s, in any
+// scalar type: what automatically differentiated edges read of a VertexStereoExtrinsic.
+template <typename T>
+struct ExtrinsicState {
+  Eigen::Matrix<T, 6, 1> parameters;
+  Eigen::Matrix<T, 3, 3> rotation;
+
+  static ExtrinsicState fromParameters(const Eigen::Matrix<T, 6, 1>& s) {
+    return {s, rollPitchYawRotation<T>(s[3], s[4], s[5])};
+  }
+};
 
 // The transform of a secondary camera relative to the base camera, shared by
 // every pose of a window: s = (x, y, z, roll, pitch, yaw), where (x, y, z) = c
@@ -27,6 +54,15 @@ class VertexStereoExtrinsic : public VectorVertex<6> {
   const Eigen::Matrix3d& yawRotation() const { return yaw_; }
   // The rigid transform X_c1 = R_s (X_c0 - c), secondary-from-base.
   Eigen::Isometry3d secondaryFromBase() const;
+
+  // For graph/autodiff_edge.h (in place of VectorVertex's, which give the
+  // parameters alone): the parameters with R_s, as they are and after oplus(delta).
+  ExtrinsicState<double> state() const { return {estimate_, rotation_}; }
+  template <typename T>
+  ExtrinsicState<T> perturbed(const Eigen::Matrix<T, 6, 1>& delta) const {
+    return ExtrinsicState<T>::fromParameters(estimate_.cast<T>() + delta);
+  }
+
   const char* typeTag() const override { return kTypeTag; }
   std::unique_ptr<Vertex> clone() const override { return std::make_unique<VertexStereoExtrinsic>(*this); }
 

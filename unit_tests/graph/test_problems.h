@@ -133,29 +133,32 @@ namespace detail {
 
 template <int K, typename EdgeType>
 void compareJacobian(const EdgeType& edge, const Eigen::MatrixXd& analytic, double relative, double absolute,
-                     std::string& failures) {
+                     const char* referenceName, std::string& failures) {
   if (edge.vertex(K)->fixed()) return;
-  const auto& numeric = edge.template jacobian<K>();
-  for (Eigen::Index c = 0; c < numeric.cols(); ++c) {
-    const double error = (analytic.col(c) - numeric.col(c)).norm();
-    if (error <= relative * numeric.col(c).norm() + absolute) continue;
+  const auto& reference = edge.template jacobian<K>();
+  for (Eigen::Index c = 0; c < reference.cols(); ++c) {
+    const double error = (analytic.col(c) - reference.col(c)).norm();
+    if (error <= relative * reference.col(c).norm() + absolute) continue;
     std::ostringstream out;
-    out << "vertex " << K << " column " << c << ": analytic " << analytic.col(c).transpose() << ", numeric "
-        << numeric.col(c).transpose() << " (error " << error << ")\n";
+    out.precision(17);
+    out << "vertex " << K << " column " << c << ": analytic " << analytic.col(c).transpose() << ", " << referenceName
+        << " " << reference.col(c).transpose() << " (error " << error << ")\n";
     failures += out.str();
   }
 }
 
-template <typename EdgeType, std::size_t... K>
-::testing::AssertionResult compareJacobians(EdgeType& edge, double relative, double absolute,
-                                            std::index_sequence<K...>) {
+// Runs computeJacobians() (analytic), then `reference` on the same edge, and compares.
+template <typename EdgeType, typename Reference, std::size_t... K>
+::testing::AssertionResult compareJacobians(EdgeType& edge, Reference reference, const char* referenceName,
+                                            double relative, double absolute, std::index_sequence<K...>) {
   edge.computeJacobians();
   const std::tuple analytic{Eigen::MatrixXd(edge.template jacobian<static_cast<int>(K)>())...};
-  edge.computeNumericJacobians();
+  reference(edge);
   std::string failures;
-  (compareJacobian<static_cast<int>(K)>(edge, std::get<K>(analytic), relative, absolute, failures), ...);
+  (compareJacobian<static_cast<int>(K)>(edge, std::get<K>(analytic), relative, absolute, referenceName, failures), ...);
   if (failures.empty()) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << edge.typeTag() << " Jacobians differ from central differences:\n" << failures;
+  return ::testing::AssertionFailure() << edge.typeTag() << " Jacobians differ from " << referenceName << ":\n"
+                                       << failures;
 }
 
 }  // namespace detail
@@ -165,7 +168,17 @@ template <typename EdgeType, std::size_t... K>
 // |analytic - numeric| <= relative |numeric| + absolute.
 template <typename EdgeType>
 ::testing::AssertionResult jacobiansMatchNumeric(EdgeType& edge, double relative = 1e-6, double absolute = 1e-6) {
-  return detail::compareJacobians(edge, relative, absolute, std::make_index_sequence<EdgeType::kVertexCount>{});
+  return detail::compareJacobians(
+      edge, [](EdgeType& e) { e.computeNumericJacobians(); }, "central differences", relative, absolute,
+      std::make_index_sequence<EdgeType::kVertexCount>{});
+}
+
+// The same against computeAutoDiffJacobians() (graph/autodiff_edge.h).
+template <typename EdgeType>
+::testing::AssertionResult jacobiansMatchAutoDiff(EdgeType& edge, double relative, double absolute) {
+  return detail::compareJacobians(
+      edge, [](EdgeType& e) { e.computeAutoDiffJacobians(); }, "automatic differentiation", relative, absolute,
+      std::make_index_sequence<EdgeType::kVertexCount>{});
 }
 
 }  // namespace lrsvo::test
