@@ -232,7 +232,8 @@ void writeBal(const BalProblem& problem, const std::string& path) {
   if (!file) throw Error("cannot write BAL file '" + path + "'");
 }
 
-Graph makeBalGraph(const BalProblem& problem, const std::string& kernel, double kernelDelta) {
+Graph makeBalGraph(const BalProblem& problem, const std::string& kernel, double kernelDelta,
+                   const std::function<std::unique_ptr<EdgeBalProjection>()>& makeEdge) {
   checkProblem(problem);
   const std::shared_ptr<RobustKernel> robustKernel = kernel.empty() ? nullptr : makeRobustKernel(kernel, kernelDelta);
   const int cameraCount = static_cast<int>(problem.cameras.size());
@@ -246,7 +247,7 @@ Graph makeBalGraph(const BalProblem& problem, const std::string& kernel, double 
   for (std::size_t i = 0; i < problem.points.size(); ++i)
     points[i] = graph.addVertex(std::make_unique<VertexPoint3>(cameraCount + static_cast<int>(i), problem.points[i]));
   for (const BalObservation& o : problem.observations) {
-    auto edge = std::make_unique<EdgeBalProjection>();
+    std::unique_ptr<EdgeBalProjection> edge = makeEdge ? makeEdge() : std::make_unique<EdgeBalProjection>();
     edge->setVertex(0, cameras[o.camera]);
     edge->setVertex(1, points[o.point]);
     edge->setMeasurement(o.pixel);

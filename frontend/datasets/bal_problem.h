@@ -2,11 +2,14 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "lrsvo/edges/edge_bal_projection.h"
 #include "lrsvo/graph/graph.h"
 
 namespace lrsvo {
@@ -35,8 +38,10 @@ void writeBal(const BalProblem& problem, const std::string& path);
 
 // Vertex ids: cameras 0..C-1 (VertexBalCamera), points C..C+P-1
 // (VertexPoint3, marginalised); one EdgeBalProjection per observation,
-// with an optional robust kernel ("" for none).
-Graph makeBalGraph(const BalProblem& problem, const std::string& kernel = "", double kernelDelta = 1.0);
+// with an optional robust kernel ("" for none). `makeEdge`, when given, makes
+// the edges: an EdgeBalProjection subclass (other Jacobians, say).
+Graph makeBalGraph(const BalProblem& problem, const std::string& kernel = "", double kernelDelta = 1.0,
+                   const std::function<std::unique_ptr<EdgeBalProjection>()>& makeEdge = nullptr);
 // Copies the graph's estimates back into the problem (same layout as makeBalGraph).
 void updateFromGraph(BalProblem& problem, const Graph& graph);
 

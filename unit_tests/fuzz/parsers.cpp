@@ -15,6 +15,7 @@
 #include "lrsvo/frontend/datasets/euroc_reader.h"
 #include "lrsvo/frontend/datasets/gtsam_stereo_vo.h"
 #include "lrsvo/frontend/datasets/kitti_reader.h"
+#include "lrsvo/frontend/datasets/nist_problem.h"
 #include "lrsvo/frontend/datasets/pose_file.h"
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/graph_file.h"
@@ -176,6 +177,10 @@ void gtsamVo(const std::uint8_t* data, std::size_t size) {
   rejectingBadInput([&] { (void)loadGtsamStereoVo(folder.string(), "fuzz"); });
 }
 
+void nistProblem(const std::uint8_t* data, std::size_t size) {
+  rejectingBadInput([&] { (void)parseNistProblem(std::string(whole(data, size)), "fuzz input"); });
+}
+
 }  // namespace
 
 const std::vector<Parser>& parsers() {
@@ -189,6 +194,7 @@ const std::vector<Parser>& parsers() {
       {"kitti_calib_times", "KITTI calib.txt NUL times.txt (KittiSource)", kittiCalibTimes},
       {"scenario_yaml", "a sim: scenario YAML (readScenarioYaml)", scenarioYaml},
       {"gtsam_vo", "GTSAM VO calibration NUL poses NUL factors (loadGtsamStereoVo)", gtsamVo},
+      {"nist_problem", "a NIST StRD regression file (parseNistProblem)", nistProblem},
   };
   return all;
 }

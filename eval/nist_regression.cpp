@@ -1,0 +1,132 @@
+#include "lrsvo/eval/nist_regression.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <memory>
+
+#include "lrsvo/eval/nist_models.h"
+#include "lrsvo/graph/autodiff_edge.h"
+#include "lrsvo/graph/error.h"
+#include "lrsvo/graph/graph.h"
+#include "lrsvo/graph/optimizer.h"
+
+namespace lrsvo {
+namespace {
+
+// The regression's parameters b, updated additively.
+template <int N>
+class VertexRegressionParameters : public VectorVertex<N> {
+ public:
+  using VectorVertex<N>::VectorVertex;
+  const char* typeTag() const override { return "REGRESSION_PARAMETERS"; }
+  std::unique_ptr<Vertex> clone() const override { return std::make_unique<VertexRegressionParameters>(*this); }
+};
+
+// One observation: r = y - f(b; x) (log y for Nelson), NIST's own residual.
+template <int N>
+class EdgeRegressionObservation : public AutoDiffEdge<EdgeRegressionObservation<N>, 1, VertexRegressionParameters<N>> {
+ public:
+  EdgeRegressionObservation(NistModel model, double response, const double* predictors, const NistSolveOptions& options)
+      : model_(model), response_(response), jacobians_(options.jacobians), numeric_(options.numeric) {
+    std::copy(predictors, predictors + 2, predictors_);
+  }
+
+  const char* typeTag() const override { return "REGRESSION_OBSERVATION"; }
+
+  template <typename T>
+  void residual(const Eigen::Matrix<T, N, 1>& b, Eigen::Matrix<T, 1, 1>& r) const {
+    r[0] = response_ - nistPrediction<T>(model_, b.data(), predictors_);
+  }
+
+  void computeJacobians() override {
+    if (jacobians_ == RegressionJacobians::kAutoDiff)
+      this->computeAutoDiffJacobians();
+    else
+      this->computeNumericJacobians();
+  }
+  NumericDiffOptions numericDiffOptions() const override { return numeric_; }
+
+ private:
+  NistModel model_;
+  double response_;
+  double predictors_[2] = {0.0, 0.0};
+  RegressionJacobians jacobians_;
+  NumericDiffOptions numeric_;
+};
+
+template <int N>
+NistSolve solveWith(const NistProblem& problem, int start, const NistSolveOptions& options) {
+  const NistModel model = nistModelOf(problem.name);
+  Graph graph;
+  auto* parameters = graph.addVertex(std::make_unique<VertexRegressionParameters<N>>(0));
+  parameters->setEstimateVector(problem.starts[start - 1]);
+  for (int i = 0; i < problem.observationCount(); ++i) {
+    double predictors[2] = {0.0, 0.0};
+    for (int p = 0; p < std::min<int>(2, static_cast<int>(problem.predictors.cols())); ++p)
+      predictors[p] = problem.predictors(i, p);
+    auto edge = std::make_unique<EdgeRegressionObservation<N>>(model, nistResponse(model, problem.response[i]),
+                                                               predictors, options);
+    edge->setVertex(0, parameters);
+    graph.addEdge(std::move(edge));
+  }
+  NistSolve solve;
+  solve.problem = problem.name;
+  solve.start = start;
+  solve.summary = Optimizer(options.solver).optimize(graph);
+  solve.estimate = parameters->estimate();
+  solve.residualSumOfSquares = 2.0 * solve.summary.finalCost;
+  solve.digits.resize(N);
+  for (int k = 0; k < N; ++k) solve.digits[k] = correctDigits(solve.estimate[k], problem.certified[k]);
+  return solve;
+}
+
+}  // namespace
+
+SolverOptions nistSolverOptions() {
+  SolverOptions options = SolverOptions::fromName("lm_dense");
+  options.maxIterations = 1000;
+  options.functionTolerance = std::numeric_limits<double>::epsilon();
+  options.gradientTolerance = std::numeric_limits<double>::epsilon();
+  options.parameterTolerance = std::numeric_limits<double>::epsilon();
+  return options;
+}
+
+double correctDigits(double estimate, double certified) {
+  constexpr double kCertifiedDigits = 11.0;
+  if (!std::isfinite(estimate)) return 0.0;
+  const double relative = std::abs(estimate - certified) / std::abs(certified);
+  if (relative == 0.0) return kCertifiedDigits;
+  return std::clamp(-std::log10(relative), 0.0, kCertifiedDigits);
+}
+
+std::vector<std::string> nistProblemFiles(const std::string& directory) {
+  std::vector<std::string> files;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error))
+    if (entry.path().extension() == ".dat") files.push_back(entry.path().string());
+  if (error) throw Error("cannot read the NIST folder '" + directory + "': " + error.message());
+  if (files.empty()) throw Error("no NIST problem files (*.dat) in '" + directory + "'");
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+NistSolve solveNist(const NistProblem& problem, int start, const NistSolveOptions& options) {
+  if (start != 1 && start != 2) throw Error("a NIST problem has starts 1 and 2, not " + std::to_string(start));
+  switch (problem.parameterCount()) {
+    case 2: return solveWith<2>(problem, start, options);
+    case 3: return solveWith<3>(problem, start, options);
+    case 4: return solveWith<4>(problem, start, options);
+    case 5: return solveWith<5>(problem, start, options);
+    case 6: return solveWith<6>(problem, start, options);
+    case 7: return solveWith<7>(problem, start, options);
+    case 8: return solveWith<8>(problem, start, options);
+    case 9: return solveWith<9>(problem, start, options);
+    default:
+      throw Error("NIST problem " + problem.name + " has " + std::to_string(problem.parameterCount()) +
+                  " parameters; the models have 2 to 9");
+  }
+}
+
+}  // namespace lrsvo
