@@ -8,6 +8,8 @@
 #include "lrsvo/edges/edge_project_secondary.h"
 #include "lrsvo/edges/edge_project_secondary_drifting.h"
 #include "lrsvo/edges/edge_scale_prior.h"
+#include "lrsvo/edges/edge_se2.h"
+#include "lrsvo/edges/edge_se3_quat.h"
 #include "lrsvo/graph/registry.h"
 #include "lrsvo/vertices/vertex_types.h"
 
@@ -25,6 +27,8 @@ void registerEdgeTypes() {
     LRSVO_ADD_TYPE(Registry<Edge>::instance(), EdgeProjectSecondaryScaled);
     LRSVO_ADD_TYPE(Registry<Edge>::instance(), EdgeProjectSecondaryDrifting);
     LRSVO_ADD_TYPE(Registry<Edge>::instance(), EdgeScalePrior);
+    LRSVO_ADD_TYPE(Registry<Edge>::instance(), EdgeSE2);
+    LRSVO_ADD_TYPE(Registry<Edge>::instance(), EdgeSE3Quat);
     return true;
   }();
   (void)registered;

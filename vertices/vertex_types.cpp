@@ -6,6 +6,8 @@
 #include "lrsvo/vertices/vertex_point3.h"
 #include "lrsvo/vertices/vertex_pose.h"
 #include "lrsvo/vertices/vertex_scale.h"
+#include "lrsvo/vertices/vertex_se2.h"
+#include "lrsvo/vertices/vertex_se3_quat.h"
 #include "lrsvo/vertices/vertex_stereo_extrinsic.h"
 
 namespace lrsvo {
@@ -17,6 +19,8 @@ void registerVertexTypes() {
     LRSVO_ADD_TYPE(Registry<Vertex>::instance(), VertexPoint3);
     LRSVO_ADD_TYPE(Registry<Vertex>::instance(), VertexPose);
     LRSVO_ADD_TYPE(Registry<Vertex>::instance(), VertexScale);
+    LRSVO_ADD_TYPE(Registry<Vertex>::instance(), VertexSE2);
+    LRSVO_ADD_TYPE(Registry<Vertex>::instance(), VertexSE3Quat);
     LRSVO_ADD_TYPE(Registry<Vertex>::instance(), VertexStereoExtrinsic);
     return true;
   }();
