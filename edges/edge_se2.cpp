@@ -10,14 +10,6 @@ Eigen::Matrix2d rotation(double angle) { return Eigen::Rotation2Dd(angle).toRota
 
 }  // namespace
 
-void EdgeSE2::computeResidual(Residual& residual) const {
-  const VertexSE2& from = *vertexAs<0>();
-  const VertexSE2& to = *vertexAs<1>();
-  const Eigen::Vector2d inFrom = rotation(from.angle()).transpose() * (to.translation() - from.translation());
-  residual.head<2>() = rotation(measurement_[2]).transpose() * (inFrom - measurement_.head<2>());
-  residual[2] = wrapAngle(to.angle() - from.angle() - measurement_[2]);
-}
-
 void EdgeSE2::computeJacobians() {
   const VertexSE2& from = *vertexAs<0>();
   const VertexSE2& to = *vertexAs<1>();

@@ -30,14 +30,6 @@ void EdgeSE3Quat::setRelativePose(const Eigen::Isometry3d& pose) {
   setRelativePose(pose.translation(), Eigen::Quaterniond(pose.linear()).normalized());
 }
 
-void EdgeSE3Quat::computeResidual(Residual& residual) const {
-  const VertexSE3Quat& from = *vertexAs<0>();
-  const VertexSE3Quat& to = *vertexAs<1>();
-  const Eigen::Vector3d inFrom = from.rotation().transpose() * (to.translation() - from.translation());
-  residual.head<3>() = inverseRotation_ * (inFrom - relativeTranslation_);
-  residual.tail<3>() = errorQuaternion(inverseUnitQuaternion_, from, to).vec();
-}
-
 void EdgeSE3Quat::computeJacobians() {
   // Under VertexSE3Quat's update (t + dt, R Exp(dphi)):
   //   translation: d/dt_i = -Rz^T Ri^T, d/dphi_i = Rz^T [v]x with v = Ri^T (t_j - t_i), d/dt_j = Rz^T Ri^T;

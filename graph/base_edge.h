@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <istream>
@@ -114,9 +115,6 @@ class BaseEdge : public Edge {
   }
 
   void addHessianBlock(int a, int b, double* block, int ld) const final { kBlockTable[a][b](*this, block, ld); }
-  int residualRows() const final { return R; }
-  void copyJacobianRows(int a, double* rows, int ld) const final { kRowsTable[a](*this, rows, ld); }
-  void copyResidualRows(double* residual) const final { Eigen::Map<Residual>{residual} = whitenedResidual_; }
   void addGradient(int a, double* gradient) const final { kGradientTable[a](*this, gradient); }
 
   void writeData(std::ostream& out) const override {
@@ -146,7 +144,6 @@ class BaseEdge : public Edge {
  private:
   using BlockFn = void (*)(const BaseEdge&, double*, int);
   using GradientFn = void (*)(const BaseEdge&, double*);
-  using RowsFn = void (*)(const BaseEdge&, double*, int);
   using AcceptFn = bool (*)(const Vertex&);
 
   template <int K>
@@ -190,8 +187,9 @@ class BaseEdge : public Edge {
 
   // Differentiates on a private copy of the vertex, so concurrent edges never
   // see a perturbed shared vertex. The step of coordinate d is the options'
-  // relative step times |x_d| for Euclidean vertices (whose coordinate d is
-  // parameter d), and times 1 for manifold vertices' tangent coordinates.
+  // relative step times max(|x_d|, typical magnitude) for Euclidean vertices
+  // (whose coordinate d is parameter d), times the typical magnitude (1 when
+  // that is 0) for manifold vertices' tangent coordinates.
   template <int K>
   void numericJacobian(const NumericDiffOptions& options, const Residual& r0) {
     Vertex* original = vertices_[K];
@@ -203,7 +201,7 @@ class BaseEdge : public Edge {
     vertices_[K] = copy.get();
     const double relativeStep = options.step();
     for (int d = 0; d < D; ++d) {
-      const double magnitude = original->isEuclidean() ? std::abs(start[d]) : 0.0;
+      const double magnitude = std::max(original->isEuclidean() ? std::abs(start[d]) : 0.0, options.typicalMagnitude);
       const double h = relativeStep * (magnitude > 0.0 ? magnitude : 1.0);
       auto evaluate = [&](double t, Residual& residual) {
         Eigen::Matrix<double, D, 1> delta = Eigen::Matrix<double, D, 1>::Zero();
@@ -237,13 +235,6 @@ class BaseEdge : public Edge {
     Eigen::Map<Gradient>(gradient).noalias() += std::get<A>(edge.jacobians_).transpose() * edge.whitenedResidual_;
   }
 
-  template <int A>
-  static void rowsImpl(const BaseEdge& edge, double* rows, int ld) {
-    // A dynamic column-major map: a fixed 1 x D type would be row-major.
-    Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>(rows, R, VertexType<A>::kDimension, Eigen::OuterStride<>(ld)) =
-        std::get<A>(edge.jacobians_);
-  }
-
   template <int A, std::size_t... B>
   static constexpr std::array<BlockFn, kVertexCount> blockRow(std::index_sequence<B...>) {
     return {&blockImpl<A, static_cast<int>(B)>...};
@@ -259,11 +250,6 @@ class BaseEdge : public Edge {
 
   static constexpr auto kBlockTable = blockTable(std::make_index_sequence<kVertexCount>{});
   static constexpr auto kGradientTable = gradientTable(std::make_index_sequence<kVertexCount>{});
-  template <std::size_t... A>
-  static constexpr std::array<RowsFn, kVertexCount> rowsTable(std::index_sequence<A...>) {
-    return {&rowsImpl<static_cast<int>(A)>...};
-  }
-  static constexpr auto kRowsTable = rowsTable(std::make_index_sequence<kVertexCount>{});
 
   Information information_ = Information::Identity();
   Information sqrtInformation_ = Information::Identity();

@@ -113,7 +113,6 @@ int BlockSystem::blockOf(const Vertex* vertex) const {
 }
 
 double BlockSystem::fill(int threads) {
-  holdsCoordinates_ = false;
   const int edgeCount = static_cast<int>(edges_.size());
   std::vector<double> costs(edgeCount);
   parallelFor(0, edgeCount, threads, [&](int e) { costs[e] = edges_[e]->linearize(); });
@@ -138,36 +137,6 @@ double BlockSystem::fill(int threads) {
   return total;
 }
 
-bool BlockSystem::stackJacobian(Eigen::MatrixXd& jacobian, Eigen::VectorXd& residual) const {
-  if (holdsCoordinates_) return false;
-  Eigen::Index rows = 0;
-  for (const Edge* edge : edges_) {
-    if (edge->residualRows() == 0) return false;
-    rows += edge->residualRows();
-  }
-  jacobian.setZero(rows, scalarCount_);
-  residual.resize(rows);
-  Eigen::Index row = 0;
-  for (const Edge* edge : edges_) {
-    for (int a = 0; a < edge->vertexCount(); ++a) {
-      const int block = blockOf(edge->vertex(a));
-      if (block >= 0) edge->copyJacobianRows(a, &jacobian(row, offsets_[block]), static_cast<int>(jacobian.rows()));
-    }
-    edge->copyResidualRows(residual.data() + row);
-    row += edge->residualRows();
-  }
-  return true;
-}
-
-Eigen::VectorXd BlockSystem::diagonalShift() const {
-  Eigen::VectorXd shift(scalarCount_);
-  for (int i = 0; i < blockCount(); ++i) {
-    const double* diag = values(blocks_[diagonalBlock(i)]);
-    for (int d = 0; d < dims_[i]; ++d) shift[offsets_[i] + d] = diag[d * dims_[i] + d] - diagonal_[offsets_[i] + d];
-  }
-  return shift;
-}
-
 double BlockSystem::cost(int threads) const {
   const int edgeCount = static_cast<int>(edges_.size());
   std::vector<double> costs(edgeCount);
@@ -185,7 +154,6 @@ void BlockSystem::setDiagonalShift(const Eigen::VectorXd& shift) {
 }
 
 void BlockSystem::holdCoordinate(int block, int coordinate) {
-  holdsCoordinates_ = true;
   const int d = dims_[block];
   for (int k : rowBlocks_[block]) {
     const int cols = dims_[blocks_[k].col];

@@ -58,13 +58,6 @@ class BlockSystem {
   // those of the identity and its gradient zero, so every solve gives it a
   // zero step (active-set methods). Undone by the next fill().
   void holdCoordinate(int block, int coordinate);
-  // The whitened Jacobian J (rows of every edge, columns of the active
-  // vertices) and residual r whose J^T J and J^T r the blocks and gradient
-  // hold, after fill(). False when an edge has no rows (a cost edge) or a
-  // coordinate is held: then H and g are not J^T J and J^T r.
-  bool stackJacobian(Eigen::MatrixXd& jacobian, Eigen::VectorXd& residual) const;
-  // The current shift of diag(H) over its undamped diagonal (setDiagonalShift's).
-  Eigen::VectorXd diagonalShift() const;
   // y = H x with the current (possibly shifted) blocks.
   Eigen::VectorXd multiply(const Eigen::VectorXd& x) const;
 
@@ -93,7 +86,6 @@ class BlockSystem {
   std::vector<std::vector<Contribution>> gradientContributions_;  // b unused
   std::vector<double> values_;
   Eigen::VectorXd gradient_, diagonal_;
-  bool holdsCoordinates_ = false;  // since the last fill()
   std::vector<double> savedEstimates_;
   std::vector<std::size_t> estimateOffsets_;
 };

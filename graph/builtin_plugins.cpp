@@ -4,7 +4,6 @@ namespace lrsvo {
 
 void LinearSolver::addBuiltins(Registry<LinearSolver>& registry) {
   addDenseSolver(registry);
-  addDenseQrSolver(registry);
   addCholmodSolver(registry);
   addSchurDenseSolver(registry);
   addSchurCholmodSolver(registry);

@@ -9,7 +9,6 @@ namespace lrsvo {
 // Each of the graph library's plugins adds itself to its registry from its own
 // source file; builtin_plugins.cpp calls them all (Product::addBuiltins).
 void addDenseSolver(Registry<LinearSolver>& registry);
-void addDenseQrSolver(Registry<LinearSolver>& registry);
 void addCholmodSolver(Registry<LinearSolver>& registry);
 void addSchurDenseSolver(Registry<LinearSolver>& registry);
 void addSchurCholmodSolver(Registry<LinearSolver>& registry);

@@ -36,18 +36,6 @@ class Edge {
   virtual void addHessianBlock(int a, int b, double* block, int ld) const = 0;
   // After linearize(): gradient += dF / d vertex a.
   virtual void addGradient(int a, double* gradient) const = 0;
-  // Least-squares edges also give their rows of the whitened system, for
-  // solvers that factor the Jacobian itself (dense_qr): after linearize(),
-  // J_a (residualRows() x dim(a), column-major with leading dimension ld) and
-  // r, whitened and with the robust kernel's weight folded in, so that
-  // J^T J and J^T r are the blocks and gradient above. Cost edges have no rows.
-  virtual int residualRows() const { return 0; }
-  virtual void copyJacobianRows(int a, double* rows, int ld) const {
-    (void)a;
-    (void)rows;
-    (void)ld;
-  }
-  virtual void copyResidualRows(double* residual) const { (void)residual; }
   // Type-specific data in graph files (measurement, information, kernel, ...).
   virtual void writeData(std::ostream& out) const = 0;
   // Throws lrsvo::Error on missing or invalid values.

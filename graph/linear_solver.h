@@ -16,7 +16,7 @@ template <typename Product>
 class Registry;
 
 // Solves H x = rhs for the block system. Registered by name in
-// Registry<LinearSolver>: "dense", "dense_qr", "cholmod", "schur_dense", "schur_cholmod".
+// Registry<LinearSolver>: "dense", "cholmod", "schur_dense", "schur_cholmod".
 class LinearSolver {
  public:
   // The graph library's linear solvers (Registry<LinearSolver> adds them on first use).

@@ -19,12 +19,18 @@ enum class NumericDifference {
 
 struct NumericDiffOptions {
   NumericDifference method = NumericDifference::kCentral;
-  // Step as a fraction of the parameter's magnitude, h = relativeStep * |x_i|
-  // (relativeStep * 1 when x_i is 0, and for the tangent coordinates of
-  // manifold vertices, which are 0 at the estimate). A negative value takes
+  // Step as a fraction of the parameter's magnitude, h = relativeStep * max(|x_i|, typicalMagnitude)
+  // (|x_i| read as 0 for the tangent coordinates of manifold vertices, which
+  // are 0 at the estimate). A negative value takes
   // the method's optimal step for residuals of unit relative curvature:
   // eps^(1/2) forward, eps^(1/3) central, and 1e-3 as Ridders' first step.
   double relativeStep = -1.0;
+  // Where the step stops shrinking with the parameter. 1 suits parameters of
+  // order one or more and residuals that do not change on a finer scale than
+  // their parameters' units (a step far below that drowns in rounding). 0
+  // makes the step purely relative, for parameters far below one whose
+  // residuals change on their own scale (a regression's 6e-9 rate constant).
+  double typicalMagnitude = 1.0;
 
   double step() const {
     if (relativeStep > 0.0) return relativeStep;

@@ -35,6 +35,26 @@ void rodriguesCoefficients(const T& theta2, T& a, T& b) {
   b = 2.0 * halfSine * halfSine / theta2;  // 1 - cos as 2 sin^2(theta / 2): no cancellation
 }
 
+// The unit quaternion of Exp(w), (cos(theta / 2), sin(theta / 2) w / theta),
+// for any scalar type; a Taylor series in theta^2 below 1e-6, as above.
+template <typename T>
+Eigen::Quaternion<T> quaternionExp(const Eigen::Matrix<T, 3, 1>& omega) {
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  const T theta2 = omega.squaredNorm();
+  T w, k;
+  if (theta2 < 1e-6) {
+    w = 1.0 - theta2 / 8.0 + theta2 * theta2 / 384.0;
+    k = 0.5 - theta2 / 48.0 + theta2 * theta2 / 3840.0;
+  } else {
+    const T theta = sqrt(theta2);
+    w = cos(theta / 2.0);
+    k = sin(theta / 2.0) / theta;
+  }
+  return Eigen::Quaternion<T>(w, k * omega.x(), k * omega.y(), k * omega.z());
+}
+
 // [v]x for any scalar type.
 template <typename T>
 Eigen::Matrix<T, 3, 3> skewOf(const Eigen::Matrix<T, 3, 1>& v) {

@@ -32,6 +32,14 @@ class VertexSE2 : public BaseVertex<3> {
   // Throws lrsvo::Error when a value is not finite.
   void setEstimate(const double* values) override;
   void oplus(const double* delta) override;
+
+  // For graph/autodiff_edge.h: (x, y, theta), and the same after oplus(delta)
+  // in any scalar type (unwrapped: the same heading, and differentiable).
+  const Eigen::Vector3d& state() const { return pose_; }
+  template <typename T>
+  Eigen::Matrix<T, 3, 1> perturbed(const Eigen::Matrix<T, 3, 1>& delta) const {
+    return pose_.cast<T>() + delta;
+  }
   const char* typeTag() const override { return kTypeTag; }
   std::unique_ptr<Vertex> clone() const override { return std::make_unique<VertexSE2>(*this); }
 

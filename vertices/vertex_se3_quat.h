@@ -5,8 +5,17 @@
 #include <Eigen/Geometry>
 
 #include "lrsvo/graph/vertex.h"
+#include "lrsvo/vertices/so3.h"
 
 namespace lrsvo {
+
+// A world-from-body pose X_w = q X_b + t in any scalar type: what
+// automatically differentiated edges read of a VertexSE3Quat.
+template <typename T>
+struct QuaternionPoseState {
+  Eigen::Quaternion<T> rotation;  // unit
+  Eigen::Matrix<T, 3, 1> translation;
+};
 
 // A pose in space, world-from-body as g2o's VERTEX_SE3:QUAT: X_w = R X_b + t.
 // Update delta = (dt, dphi): t <- t + dt (world frame), R <- R Exp(dphi)
@@ -37,6 +46,14 @@ class VertexSE3Quat : public BaseVertex<6> {
   // Throws lrsvo::Error on a non-finite value or a quaternion off unit norm.
   void setEstimate(const double* values) override;
   void oplus(const double* delta) override;
+
+  // For graph/autodiff_edge.h: the pose, and the pose after oplus(delta) in any scalar type.
+  QuaternionPoseState<double> state() const { return {unitQuaternion_, translation_}; }
+  template <typename T>
+  QuaternionPoseState<T> perturbed(const Eigen::Matrix<T, 6, 1>& delta) const {
+    return {unitQuaternion_.cast<T>() * quaternionExp<T>(delta.template tail<3>()),
+            translation_.cast<T>() + delta.template head<3>()};
+  }
   const char* typeTag() const override { return kTypeTag; }
   std::unique_ptr<Vertex> clone() const override { return std::make_unique<VertexSE3Quat>(*this); }
 

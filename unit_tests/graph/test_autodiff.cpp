@@ -27,6 +27,8 @@
 #include "lrsvo/edges/edge_project_secondary.h"
 #include "lrsvo/edges/edge_project_secondary_drifting.h"
 #include "lrsvo/edges/edge_scale_prior.h"
+#include "lrsvo/edges/edge_se2.h"
+#include "lrsvo/edges/edge_se3_quat.h"
 #include "lrsvo/edges/edge_types.h"
 #include "lrsvo/graph/autodiff_edge.h"
 #include "lrsvo/graph/registry.h"
@@ -162,6 +164,35 @@ TEST(AutoDiff, BalProjectionMatchesItsAnalyticJacobians) {
   }
 }
 
+TEST(AutoDiff, PoseGraphEdgesMatchTheirAnalyticJacobians) {
+  std::mt19937_64 rng(26);
+  std::uniform_real_distribution<double> heading(-3.1, 3.1);
+  for (int trial = 0; trial < kTrials; ++trial) {
+    VertexSE2 a(0, Eigen::Vector3d(gaussian3(rng, 5.0).x(), gaussian3(rng, 5.0).y(), heading(rng)));
+    VertexSE2 b(1, Eigen::Vector3d(gaussian3(rng, 5.0).x(), gaussian3(rng, 5.0).y(), heading(rng)));
+    EdgeSE2 planar;
+    planar.setVertex(0, &a);
+    planar.setVertex(1, &b);
+    planar.setMeasurement(Eigen::Vector3d(gaussian3(rng, 1.0).x(), gaussian3(rng, 1.0).y(), heading(rng)));
+    expectAutoDiffMatches(planar, trial);
+
+    Eigen::Isometry3d from = Eigen::Isometry3d::Identity(), to = Eigen::Isometry3d::Identity(),
+                      relative = Eigen::Isometry3d::Identity();
+    from.linear() = expSO3(gaussian3(rng, 1.5));
+    from.translation() = gaussian3(rng, 5.0);
+    to.linear() = expSO3(gaussian3(rng, 1.5));
+    to.translation() = gaussian3(rng, 5.0);
+    relative.linear() = expSO3(gaussian3(rng, 1.5));
+    relative.translation() = gaussian3(rng, 1.0);
+    VertexSE3Quat c(2, from), d(3, to);
+    EdgeSE3Quat spatial;
+    spatial.setVertex(0, &c);
+    spatial.setVertex(1, &d);
+    spatial.setRelativePose(relative);
+    expectAutoDiffMatches(spatial, trial);
+  }
+}
+
 TEST(AutoDiff, FixedVerticesAreSkipped) {
   std::mt19937_64 rng(24);
   StereoState s(rng);
@@ -222,7 +253,9 @@ TEST(AutoDiff, EveryRegisteredEdgeTypeIsCovered) {
                                          EdgeProjectSecondary::kTypeTag,
                                          EdgeProjectSecondaryScaled::kTypeTag,
                                          EdgeProjectSecondaryDrifting::kTypeTag,
-                                         EdgeScalePrior::kTypeTag};
+                                         EdgeScalePrior::kTypeTag,
+                                         EdgeSE2::kTypeTag,
+                                         EdgeSE3Quat::kTypeTag};
   for (const auto& [tag, entry] : Registry<Edge>::instance().entries()) {
     if (tag.rfind("TEST_", 0) == 0 || tag == BarrierEdge::kTypeTag) continue;  // other tests' own types
     EXPECT_TRUE(covered.count(tag)) << tag << " has no automatic-differentiation check";

@@ -41,7 +41,7 @@ class EdgeThreeScales : public AutoDiffEdge<EdgeThreeScales, 3, VertexThreeScale
 double worstRelativeError(NumericDifference method) {
   VertexThreeScales b(0);
   b.setEstimateVector(Eigen::Vector3d(6e-9, 0.7, 6e3));
-  EdgeThreeScales edge(NumericDiffOptions{.method = method});
+  EdgeThreeScales edge(NumericDiffOptions{.method = method, .typicalMagnitude = 0.0});
   edge.setVertex(0, &b);
   edge.computeAutoDiffJacobians();
   const Eigen::Matrix3d exact = edge.jacobian<0>();
@@ -79,8 +79,8 @@ TEST(NumericDiff, RiddersExtrapolatesBelowCentralDifferences) {
     return std::abs(edge.jacobian<0>()(1, 1) - exact) / std::abs(exact);
   };
   // sin at h = 0.1 |0.7|: central errs by h^2 / 6 = 8e-5; Ridders starting there gets below 1e-10.
-  EXPECT_GT(errorOf({.method = NumericDifference::kCentral, .relativeStep = 0.1}), 1e-5);
-  EXPECT_LT(errorOf({.method = NumericDifference::kRidders, .relativeStep = 0.1}), 1e-10);
+  EXPECT_GT(errorOf({.method = NumericDifference::kCentral, .relativeStep = 0.1, .typicalMagnitude = 0.0}), 1e-5);
+  EXPECT_LT(errorOf({.method = NumericDifference::kRidders, .relativeStep = 0.1, .typicalMagnitude = 0.0}), 1e-10);
 }
 
 TEST(NumericDiff, DefaultStepsAreTheMethodsOptima) {
