@@ -76,7 +76,9 @@ class Parser {
 
   int count(const std::string& word, int line) const {
     const double value = number(word, line);
-    if (value < 1 || value != std::floor(value)) fail(line, "'" + word + "' is not a positive count");
+    constexpr double kLargest = 1e7;  // far above any NIST problem, and an int
+    if (value < 1 || value > kLargest || value != std::floor(value))
+      fail(line, "'" + word + "' is not a count from 1 to 10^7");
     return static_cast<int>(value);
   }
 

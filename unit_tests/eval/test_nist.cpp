@@ -94,6 +94,9 @@ TEST(NistProblem, BadInputNamesTheLine) {
   std::string shortRow = good;
   shortRow.replace(shortRow.find("    5.500000E+01"), 16, "");
   expectParseError(shortRow, 10, "needs 2 numbers");
+  std::string huge = good;
+  huge.replace(huge.find("2\nData:"), 1, "1e300");
+  expectParseError(huge, 7, "not a count");
   std::string noStarts = good;
   noStarts.replace(noStarts.find("Start 1"), 7, "Begin 1");
   expectParseError(noStarts, 10, "no starting values");
