@@ -34,13 +34,6 @@ struct Tally {
   }
 };
 
-double minCorrectDigits(const Eigen::VectorXd& estimate, const Eigen::VectorXd& certified) {
-  double digits = 11.0;
-  for (Eigen::Index k = 0; k < certified.size(); ++k)
-    digits = std::min(digits, correctDigits(estimate[k], certified[k]));
-  return digits;
-}
-
 void run(const BenchNistOptions& o) {
   const NistSolveOptions options;
   const std::vector<std::string> files = nistProblemFiles(o.directory);
@@ -57,7 +50,7 @@ void run(const BenchNistOptions& o) {
     for (int start : {1, 2}) {
       const NistSolve solve = solveNist(problem, start, options);
       const bench::CeresNistSolve reference = bench::solveNistWithCeres(problem, start, options.solver);
-      const double referenceDigits = minCorrectDigits(reference.estimate, problem.certified);
+      const double referenceDigits = correctDigits(reference.estimate, problem.certified).minCoeff();
       ours.add(solve.minDigits(), solve.summary.totalSeconds);
       ceres.add(referenceDigits, reference.result.totalSeconds);
       std::printf("%-9s %5d %12.2f %12.2f %12d %12d\n", problem.name.c_str(), start, solve.minDigits(), referenceDigits,

@@ -31,7 +31,6 @@ NistSolveOptions solveOptions(const NistCommandOptions& o) {
   options.solver.verbose = o.verbose;
   if (o.jacobians != "autodiff") {
     options.jacobians = RegressionJacobians::kNumeric;
-    options.numeric.typicalMagnitude = 0.0;  // steps relative to each parameter, however small
     options.numeric.method = o.jacobians == "forward"   ? NumericDifference::kForward
                              : o.jacobians == "ridders" ? NumericDifference::kRidders
                                                         : NumericDifference::kCentral;

@@ -77,8 +77,7 @@ NistSolve solveWith(const NistProblem& problem, int start, const NistSolveOption
   solve.summary = Optimizer(options.solver).optimize(graph);
   solve.estimate = parameters->estimate();
   solve.residualSumOfSquares = 2.0 * solve.summary.finalCost;
-  solve.digits.resize(N);
-  for (int k = 0; k < N; ++k) solve.digits[k] = correctDigits(solve.estimate[k], problem.certified[k]);
+  solve.digits = correctDigits(solve.estimate, problem.certified);
   return solve;
 }
 
@@ -99,6 +98,12 @@ double correctDigits(double estimate, double certified) {
   const double relative = std::abs(estimate - certified) / std::abs(certified);
   if (relative == 0.0) return kCertifiedDigits;
   return std::clamp(-std::log10(relative), 0.0, kCertifiedDigits);
+}
+
+Eigen::VectorXd correctDigits(const Eigen::VectorXd& estimate, const Eigen::VectorXd& certified) {
+  Eigen::VectorXd digits(certified.size());
+  for (Eigen::Index k = 0; k < certified.size(); ++k) digits[k] = correctDigits(estimate[k], certified[k]);
+  return digits;
 }
 
 std::vector<std::string> nistProblemFiles(const std::string& directory) {

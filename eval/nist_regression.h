@@ -23,7 +23,9 @@ enum class RegressionJacobians { kAutoDiff, kNumeric };
 struct NistSolveOptions {
   SolverOptions solver = nistSolverOptions();
   RegressionJacobians jacobians = RegressionJacobians::kAutoDiff;
-  NumericDiffOptions numeric;  // with kNumeric
+  // With kNumeric: steps relative to each parameter however small (a
+  // regression's parameters span 6e-9 to 6e3 and its residuals follow each).
+  NumericDiffOptions numeric{.typicalMagnitude = 0.0};
 };
 
 // One solve of a NIST problem from one of its starts.
@@ -45,6 +47,8 @@ struct NistSolve {
 
 // Log relative error of an estimate against a certified value, capped at 11.
 double correctDigits(double estimate, double certified);
+// The same per parameter.
+Eigen::VectorXd correctDigits(const Eigen::VectorXd& estimate, const Eigen::VectorXd& certified);
 
 // The NIST problem files (*.dat) of a folder, sorted by name; throws
 // lrsvo::Error when the folder cannot be read or holds none.
