@@ -9,6 +9,9 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+#include <unsupported/Eigen/AutoDiff>
+
 #include "apps/bench/bench_common.h"
 #include "apps/command.h"
 #include "lrsvo/edges/edge_bal_projection.h"
@@ -25,13 +28,15 @@ namespace {
 
 constexpr std::uint64_t kStereoStream = 0x5e5e0;  // mixSeed label of the stereo states
 
-enum class Method { kHandWritten, kAutoDiff, kCentral, kRidders };
-constexpr Method kMethods[] = {Method::kHandWritten, Method::kAutoDiff, Method::kCentral, Method::kRidders};
+enum class Method { kHandWritten, kAutoDiff, kEigenAutoDiff, kCentral, kRidders };
+constexpr Method kMethods[] = {Method::kHandWritten, Method::kAutoDiff, Method::kEigenAutoDiff, Method::kCentral,
+                               Method::kRidders};
 
 const char* methodName(Method method) {
   switch (method) {
     case Method::kHandWritten: return "hand-written";
     case Method::kAutoDiff: return "autodiff";
+    case Method::kEigenAutoDiff: return "eigen-autodiff";
     case Method::kCentral: return "central";
     case Method::kRidders: return "ridders";
   }
@@ -62,6 +67,10 @@ void evaluate(WithNumericMethod<EdgeType>& edge, Method method) {
   switch (method) {
     case Method::kHandWritten: edge.computeJacobians(); break;
     case Method::kAutoDiff: edge.computeAutoDiffJacobians(); break;
+    case Method::kEigenAutoDiff:
+      edge.template computeAutoDiffJacobiansWith<
+          Eigen::AutoDiffScalar<Eigen::Matrix<double, EdgeType::kTangentDimension, 1>>>();
+      break;
     case Method::kCentral:
     case Method::kRidders:
       edge.method = method == Method::kRidders ? NumericDifference::kRidders : NumericDifference::kCentral;
@@ -179,7 +188,7 @@ void run(const BenchJacobiansOptions& o) {
   generator.seed = o.seed;
   const BalProblem problem = generateBalProblem(generator);
   std::printf(
-      "Jacobians: hand-written, automatic (Eigen AutoDiffScalar, fixed size), numeric (relative steps);\n"
+      "Jacobians: hand-written, automatic (lrsvo Dual; Eigen AutoDiffScalar beside it), numeric (relative steps);\n"
       "median of %d passes, 1 thread\n",
       o.repeat);
   benchBalEdges(o, problem);

@@ -4,6 +4,8 @@
 
 namespace lrsvo {
 
+template class AutoDiffEdge<EdgeBalProjection, 2, VertexBalCamera, VertexPoint3>;
+
 Eigen::Vector3d angleAxisRotate(const Eigen::Vector3d& w, const Eigen::Vector3d& x) {
   return rotateByAngleAxis<double>(w, x);
 }

@@ -30,4 +30,7 @@ class EdgeBalProjection : public AutoDiffEdge<EdgeBalProjection, 2, VertexBalCam
 // Rotates x by the angle-axis vector w (Rodrigues), as the BAL format defines.
 Eigen::Vector3d angleAxisRotate(const Eigen::Vector3d& w, const Eigen::Vector3d& x);
 
+// Its dual-number code is compiled once, in its source file.
+extern template class AutoDiffEdge<EdgeBalProjection, 2, VertexBalCamera, VertexPoint3>;
+
 }  // namespace lrsvo

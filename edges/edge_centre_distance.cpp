@@ -2,6 +2,8 @@
 
 namespace lrsvo {
 
+template class AutoDiffEdge<EdgeCentreDistance, 1, VertexPose, VertexPose>;
+
 void EdgeCentreDistance::computeJacobians() {
   // Under VertexPose's update the centre C = -R^T t moves by -R^T dt and not
   // at all with the rotation: C' = -R^T Exp(-dphi) (Exp(dphi) t + dt).

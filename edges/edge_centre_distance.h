@@ -27,4 +27,7 @@ class EdgeCentreDistance : public AutoDiffEdge<EdgeCentreDistance, 1, VertexPose
   void computeJacobians() override;
 };
 
+// Its dual-number code is compiled once, in its source file.
+extern template class AutoDiffEdge<EdgeCentreDistance, 1, VertexPose, VertexPose>;
+
 }  // namespace lrsvo

@@ -2,6 +2,8 @@
 
 namespace lrsvo {
 
+template class AutoDiffEdge<EdgeExtrinsicRatePrior, 6, VertexExtrinsicRate>;
+
 void EdgeExtrinsicRatePrior::computeJacobians() { jacobian<0>().setIdentity(); }
 
 }  // namespace lrsvo

@@ -20,4 +20,7 @@ class EdgeExtrinsicRatePrior : public AutoDiffEdge<EdgeExtrinsicRatePrior, 6, Ve
   void computeJacobians() override;
 };
 
+// Its dual-number code is compiled once, in its source file.
+extern template class AutoDiffEdge<EdgeExtrinsicRatePrior, 6, VertexExtrinsicRate>;
+
 }  // namespace lrsvo

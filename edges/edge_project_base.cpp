@@ -4,6 +4,8 @@
 
 namespace lrsvo {
 
+template class AutoDiffEdge<EdgeProjectBase, 2, VertexPose, VertexPoint3>;
+
 void EdgeProjectBase::computeJacobians() {
   const VertexPose& pose = *vertexAs<0>();
   const Eigen::Vector3d pointInCamera = pose.rotation() * vertexAs<1>()->estimate() + pose.translation();

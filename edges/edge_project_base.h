@@ -32,4 +32,7 @@ class EdgeProjectBase : public AutoDiffEdge<EdgeProjectBase, 2, VertexPose, Vert
   PinholeIntrinsics intrinsics_;
 };
 
+// Its dual-number code is compiled once, in its source file.
+extern template class AutoDiffEdge<EdgeProjectBase, 2, VertexPose, VertexPoint3>;
+
 }  // namespace lrsvo

@@ -8,6 +8,8 @@
 
 namespace lrsvo {
 
+template class AutoDiffEdge<EdgeProjectHeldView, 2, VertexPoint3, VertexScale>;
+
 EdgeProjectHeldView::EdgeProjectHeldView(const PinholeIntrinsics& intrinsics, const Eigen::Isometry3d& cameraFromWorld,
                                          const Eigen::Vector3d& origin)
     : intrinsics_(intrinsics),

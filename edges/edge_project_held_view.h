@@ -47,4 +47,7 @@ class EdgeProjectHeldView : public AutoDiffEdge<EdgeProjectHeldView, 2, VertexPo
   Eigen::Vector3d offset_ = Eigen::Vector3d::Zero();  // the centre at s = 1, minus origin
 };
 
+// Its dual-number code is compiled once, in its source file.
+extern template class AutoDiffEdge<EdgeProjectHeldView, 2, VertexPoint3, VertexScale>;
+
 }  // namespace lrsvo

@@ -2,6 +2,10 @@
 
 namespace lrsvo {
 
+template class AutoDiffEdge<EdgeProjectSecondary, 2, VertexPose, VertexPoint3, VertexStereoExtrinsic>;
+template class AutoDiffEdge<EdgeProjectSecondaryScaled, 2, VertexPose, VertexPoint3, VertexStereoExtrinsic,
+                            VertexScale>;
+
 void EdgeProjectSecondary::computeJacobians() {
   const SecondaryProjectionJacobians j =
       secondaryProjectionJacobians(*vertexAs<0>(), vertexAs<1>()->estimate(), *vertexAs<2>(), 1.0, camera_.intrinsics);

@@ -60,4 +60,9 @@ class EdgeProjectSecondaryScaled
   SecondaryCamera camera_;
 };
 
+// Its dual-number code is compiled once, in its source file.
+extern template class AutoDiffEdge<EdgeProjectSecondary, 2, VertexPose, VertexPoint3, VertexStereoExtrinsic>;
+extern template class AutoDiffEdge<EdgeProjectSecondaryScaled, 2, VertexPose, VertexPoint3, VertexStereoExtrinsic,
+                                   VertexScale>;
+
 }  // namespace lrsvo

@@ -6,6 +6,9 @@
 
 namespace lrsvo {
 
+template class AutoDiffEdge<EdgeProjectSecondaryDrifting, 2, VertexPose, VertexPoint3, VertexStereoExtrinsic,
+                            VertexExtrinsicRate>;
+
 const VertexStereoExtrinsic& EdgeProjectSecondaryDrifting::extrinsicNow() const {
   // The edges of one keyframe share its dt and come one after another in a
   // solver's loops: the last S(t) built on this thread (its rotations cost

@@ -41,4 +41,8 @@ class EdgeProjectSecondaryDrifting : public AutoDiffEdge<EdgeProjectSecondaryDri
   double dt_s_ = 0.0;
 };
 
+// Its dual-number code is compiled once, in its source file.
+extern template class AutoDiffEdge<EdgeProjectSecondaryDrifting, 2, VertexPose, VertexPoint3, VertexStereoExtrinsic,
+                                   VertexExtrinsicRate>;
+
 }  // namespace lrsvo

@@ -2,6 +2,8 @@
 
 namespace lrsvo {
 
+template class AutoDiffEdge<EdgeScalePrior, 1, VertexScale>;
+
 void EdgeScalePrior::computeJacobians() { jacobian<0>()(0, 0) = 1.0; }
 
 }  // namespace lrsvo

@@ -20,4 +20,7 @@ class EdgeScalePrior : public AutoDiffEdge<EdgeScalePrior, 1, VertexScale> {
   void computeJacobians() override;
 };
 
+// Its dual-number code is compiled once, in its source file.
+extern template class AutoDiffEdge<EdgeScalePrior, 1, VertexScale>;
+
 }  // namespace lrsvo

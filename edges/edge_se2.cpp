@@ -4,6 +4,8 @@
 
 namespace lrsvo {
 
+template class AutoDiffEdge<EdgeSE2, 3, VertexSE2, VertexSE2>;
+
 namespace {
 
 Eigen::Matrix2d rotation(double angle) { return Eigen::Rotation2Dd(angle).toRotationMatrix(); }

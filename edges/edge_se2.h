@@ -33,4 +33,7 @@ class EdgeSE2 : public AutoDiffEdge<EdgeSE2, 3, VertexSE2, VertexSE2> {
   void computeJacobians() override;
 };
 
+// Its dual-number code is compiled once, in its source file.
+extern template class AutoDiffEdge<EdgeSE2, 3, VertexSE2, VertexSE2>;
+
 }  // namespace lrsvo

@@ -5,6 +5,8 @@
 
 namespace lrsvo {
 
+template class AutoDiffEdge<EdgeSE3Quat, 6, VertexSE3Quat, VertexSE3Quat>;
+
 namespace {
 
 // The unit quaternion of E = Z^-1 Ri^T Rj with w >= 0 (q and -q are the same rotation).

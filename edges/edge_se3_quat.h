@@ -53,4 +53,7 @@ class EdgeSE3Quat : public AutoDiffEdge<EdgeSE3Quat, 6, VertexSE3Quat, VertexSE3
   Eigen::Matrix3d inverseRotation_ = Eigen::Matrix3d::Identity();              // cached Rz^T
 };
 
+// Its dual-number code is compiled once, in its source file.
+extern template class AutoDiffEdge<EdgeSE3Quat, 6, VertexSE3Quat, VertexSE3Quat>;
+
 }  // namespace lrsvo

@@ -1,10 +1,12 @@
 #include "lrsvo/eval/nist_regression.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <type_traits>
 
 #include "lrsvo/eval/nist_models.h"
 #include "lrsvo/graph/autodiff_edge.h"
@@ -14,6 +16,9 @@
 
 namespace lrsvo {
 namespace {
+
+// A dual number with 9 derivatives, the most parameters of a model.
+using NistDual = Dual<9>;
 
 // The regression's parameters b, updated additively.
 template <int N>
@@ -37,7 +42,19 @@ class EdgeRegressionObservation : public AutoDiffEdge<EdgeRegressionObservation<
 
   template <typename T>
   void residual(const Eigen::Matrix<T, N, 1>& b, Eigen::Matrix<T, 1, 1>& r) const {
-    r[0] = response_ - nistPrediction<T>(model_, b.data(), predictors_);
+    if constexpr (std::is_same_v<T, double>) {
+      r[0] = response_ - nistPrediction(model_, b.data(), predictors_);
+    } else {
+      // The models are evaluated on one dual type for every parameter count,
+      // so their 27 formulas compile once rather than once per count.
+      std::array<NistDual, N> parameters;
+      for (int k = 0; k < N; ++k) {
+        parameters[k] = NistDual(b[k].value());
+        parameters[k].v.template head<N>() = b[k].derivatives();
+      }
+      const NistDual prediction = nistPrediction(model_, parameters.data(), predictors_);
+      r[0] = T(response_ - prediction.value(), -prediction.derivatives().template head<N>());
+    }
   }
 
   void computeJacobians() override {
@@ -97,7 +114,8 @@ double correctDigits(double estimate, double certified) {
   if (!std::isfinite(estimate)) return 0.0;
   const double relative = std::abs(estimate - certified) / std::abs(certified);
   if (relative == 0.0) return kCertifiedDigits;
-  return std::clamp(-std::log10(relative), 0.0, kCertifiedDigits);
+  if (relative >= 1.0) return 0.0;  // not -0.0, which -log10(1) would print as
+  return std::min(-std::log10(relative), kCertifiedDigits);
 }
 
 Eigen::VectorXd correctDigits(const Eigen::VectorXd& estimate, const Eigen::VectorXd& certified) {

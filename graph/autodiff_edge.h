@@ -1,12 +1,13 @@
 #pragma once
 
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 #include <Eigen/Core>
-#include <unsupported/Eigen/AutoDiff>
 
 #include "lrsvo/graph/base_edge.h"
+#include "lrsvo/graph/dual.h"
 
 namespace lrsvo {
 
@@ -24,7 +25,7 @@ namespace lrsvo {
 // at delta_K = 0, exact to rounding for manifold vertices too. A vertex type is
 // usable here once it provides state() and perturbed<T>(delta) (docs/autodiff.md).
 //
-// The dual numbers are Eigen's AutoDiffScalar with a fixed-size derivative
+// The dual numbers are lrsvo's Dual (graph/dual.h) with a fixed-size derivative
 // vector as long as the edge's whole tangent space (the sum of its vertices'
 // dimensions), so they live on the stack. Derived classes may still override
 // computeJacobians() with hand-written ones; computeAutoDiffJacobians() stays
@@ -36,24 +37,24 @@ class AutoDiffEdge : public BaseEdge<R, Vs...> {
  public:
   using typename Base::Residual;
   static constexpr int kTangentDimension = (Vs::kDimension + ...);
-  using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, kTangentDimension, 1>>;
+  using Dual = lrsvo::Dual<kTangentDimension>;
 
-  void computeResidual(Residual& residual) const override {
-    evaluateAtStates(residual, std::make_index_sequence<sizeof...(Vs)>{});
-  }
-
-  void computeJacobians() override { computeAutoDiffJacobians(); }
+  void computeResidual(Residual& residual) const override;
+  void computeJacobians() override;
 
   // Fills jacobian<K>() of every non-fixed vertex by dual numbers.
-  void computeAutoDiffJacobians() { differentiate(std::make_index_sequence<sizeof...(Vs)>{}); }
+  void computeAutoDiffJacobians();
+
+  // The same with another forward-mode type DualType: Dual<N> or Eigen's
+  // AutoDiffScalar with N derivatives, N = kTangentDimension (the benchmark
+  // that compares them uses it).
+  template <typename DualType>
+  void computeAutoDiffJacobiansWith() {
+    differentiate<DualType>(std::make_index_sequence<sizeof...(Vs)>{});
+  }
 
  private:
   const Derived& derived() const { return static_cast<const Derived&>(*this); }
-
-  template <std::size_t... K>
-  void evaluateAtStates(Residual& residual, std::index_sequence<K...>) const {
-    derived().residual(this->template vertexAs<static_cast<int>(K)>()->state()..., residual);
-  }
 
   // Offset of vertex K's block in the dual numbers' derivative vector.
   template <std::size_t K>
@@ -64,31 +65,78 @@ class AutoDiffEdge : public BaseEdge<R, Vs...> {
     return offset;
   }
 
-  // Vertex K's update as dual numbers: value 0, derivative the unit vector of its slot.
-  template <std::size_t K>
-  static Eigen::Matrix<Dual, Base::template VertexType<static_cast<int>(K)>::kDimension, 1> seededDelta() {
-    constexpr int D = Base::template VertexType<static_cast<int>(K)>::kDimension;
-    Eigen::Matrix<Dual, D, 1> delta;
-    for (int d = 0; d < D; ++d) delta[d] = Dual(0.0, kTangentDimension, tangentOffset<K>() + d);
-    return delta;
-  }
+  template <typename DualType, std::size_t K>
+  using DeltaOf = Eigen::Matrix<DualType, Base::template VertexType<static_cast<int>(K)>::kDimension, 1>;
 
   template <std::size_t... K>
-  void differentiate(std::index_sequence<K...>) {
-    const auto states = std::make_tuple(this->template vertexAs<static_cast<int>(K)>()->perturbed(seededDelta<K>())...);
-    Eigen::Matrix<Dual, R, 1> residual;
-    derived().residual(std::get<K>(states)..., residual);
-    (copyJacobian<K>(residual), ...);
-  }
-
-  template <std::size_t K>
-  void copyJacobian(const Eigen::Matrix<Dual, R, 1>& residual) {
-    if (this->vertex(static_cast<int>(K))->fixed()) return;
-    constexpr int D = Base::template VertexType<static_cast<int>(K)>::kDimension;
-    auto& jacobian = this->template jacobian<static_cast<int>(K)>();
-    for (int row = 0; row < R; ++row)
-      jacobian.row(row) = residual[row].derivatives().template segment<D>(tangentOffset<K>()).transpose();
-  }
+  void evaluateAtStates(Residual& residual, std::index_sequence<K...>) const;
+  template <typename DualType, std::size_t K>
+  static DeltaOf<DualType, K> seededDelta();
+  template <typename DualType, std::size_t... K>
+  void differentiate(std::index_sequence<K...>);
+  template <typename DualType, std::size_t K>
+  void copyJacobian(const Eigen::Matrix<DualType, R, 1>& residual);
 };
+
+// The members are defined out of the class so that an edge can compile its
+// dual-number code once: its header declares
+//   extern template class AutoDiffEdge<EdgeX, R, V0, V1>;
+// and its source file instantiates it (template class ...). Without that the
+// code is instantiated wherever the edge is constructed, as any template.
+
+template <typename Derived, int R, typename... Vs>
+void AutoDiffEdge<Derived, R, Vs...>::computeResidual(Residual& residual) const {
+  evaluateAtStates(residual, std::make_index_sequence<sizeof...(Vs)>{});
+}
+
+template <typename Derived, int R, typename... Vs>
+void AutoDiffEdge<Derived, R, Vs...>::computeJacobians() {
+  computeAutoDiffJacobians();
+}
+
+template <typename Derived, int R, typename... Vs>
+void AutoDiffEdge<Derived, R, Vs...>::computeAutoDiffJacobians() {
+  differentiate<Dual>(std::make_index_sequence<sizeof...(Vs)>{});
+}
+
+template <typename Derived, int R, typename... Vs>
+template <std::size_t... K>
+void AutoDiffEdge<Derived, R, Vs...>::evaluateAtStates(Residual& residual, std::index_sequence<K...>) const {
+  derived().residual(this->template vertexAs<static_cast<int>(K)>()->state()..., residual);
+}
+
+// Vertex K's update as dual numbers: value 0, derivative the unit vector of its slot.
+template <typename Derived, int R, typename... Vs>
+template <typename DualType, std::size_t K>
+auto AutoDiffEdge<Derived, R, Vs...>::seededDelta() -> DeltaOf<DualType, K> {
+  DeltaOf<DualType, K> delta;
+  for (int d = 0; d < delta.size(); ++d) {
+    if constexpr (std::is_same_v<DualType, Dual>)
+      delta[d] = Dual::variable(0.0, tangentOffset<K>() + d);
+    else
+      delta[d] = DualType(0.0, kTangentDimension, tangentOffset<K>() + d);
+  }
+  return delta;
+}
+
+template <typename Derived, int R, typename... Vs>
+template <typename DualType, std::size_t... K>
+void AutoDiffEdge<Derived, R, Vs...>::differentiate(std::index_sequence<K...>) {
+  const auto states =
+      std::make_tuple(this->template vertexAs<static_cast<int>(K)>()->perturbed(seededDelta<DualType, K>())...);
+  Eigen::Matrix<DualType, R, 1> residual;
+  derived().residual(std::get<K>(states)..., residual);
+  (copyJacobian<DualType, K>(residual), ...);
+}
+
+template <typename Derived, int R, typename... Vs>
+template <typename DualType, std::size_t K>
+void AutoDiffEdge<Derived, R, Vs...>::copyJacobian(const Eigen::Matrix<DualType, R, 1>& residual) {
+  if (this->vertex(static_cast<int>(K))->fixed()) return;
+  constexpr int D = Base::template VertexType<static_cast<int>(K)>::kDimension;
+  auto& jacobian = this->template jacobian<static_cast<int>(K)>();
+  for (int row = 0; row < R; ++row)
+    jacobian.row(row) = residual[row].derivatives().template segment<D>(tangentOffset<K>()).transpose();
+}
 
 }  // namespace lrsvo
