@@ -106,6 +106,9 @@ SolverOptions nistSolverOptions() {
   options.functionTolerance = std::numeric_limits<double>::epsilon();
   options.gradientTolerance = std::numeric_limits<double>::epsilon();
   options.parameterTolerance = std::numeric_limits<double>::epsilon();
+  // The parameters' magnitudes span 1e-9 to 1e6 (MGH10 starts at b2 = 4e5):
+  // the damping floor is kept in the Jacobi-scaled units, as Ceres' is.
+  options.lm.jacobiScaledDiagonal = true;
   return options;
 }
 

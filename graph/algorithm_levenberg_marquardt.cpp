@@ -22,15 +22,23 @@ class LevenbergMarquardt : public OptimizationAlgorithm {
     growth_ = 2.0;
     maxLambda_ = lm.maxLambda;
     shift_.resize(context.system().scalarCount());
+    // The units the diagonal is clamped in: 1 (the parameters' own), or the
+    // squared inverse of Ceres' Jacobi scaling 1 / (1 + |column|) at the start.
+    const Eigen::VectorXd& diagonal = context.system().diagonal();
+    diagonalUnit_ = Eigen::VectorXd::Ones(diagonal.size());
+    if (lm.jacobiScaledDiagonal) diagonalUnit_ = (1.0 + diagonal.array().sqrt()).square().matrix();
   }
 
   Step tryStep(OptimizationContext& context, double cost, IterationRecord& record, double& trialCost) override {
     const SolverOptions& options = context.options();
     const LevenbergMarquardtOptions& lm = options.lm;
     const BlockSystem& system = context.system();
-    for (int i = 0; i < shift_.size(); ++i)
-      shift_[i] =
-          multiplicative_ ? lambda_ * std::clamp(system.diagonal()[i], lm.minDiagonal, lm.maxDiagonal) : lambda_;
+    for (int i = 0; i < shift_.size(); ++i) {
+      const double unit = diagonalUnit_[i];
+      shift_[i] = multiplicative_
+                      ? lambda_ * unit * std::clamp(system.diagonal()[i] / unit, lm.minDiagonal, lm.maxDiagonal)
+                      : lambda_;
+    }
     record.lambda = lambda_;
     if (!context.solveStep(shift_, dx_)) return Step::kRejected;
 
@@ -72,6 +80,7 @@ class LevenbergMarquardt : public OptimizationAlgorithm {
   double lambda_ = 0.0;
   double growth_ = 2.0;
   double maxLambda_ = 0.0;
+  Eigen::VectorXd diagonalUnit_;  // per scalar, see begin()
   Eigen::VectorXd shift_, dx_;
 };
 

@@ -26,6 +26,12 @@ struct LevenbergMarquardtOptions {
   // so a parameter with no curvature is still damped (Ceres' values).
   double minDiagonal = 1e-6;
   double maxDiagonal = 1e32;
+  // Applies that range to diag(H) in the units of the first linearisation's
+  // Jacobi scaling (each Jacobian column divided by 1 + its norm there), as
+  // Ceres' jacobi_scaling does: parameter i's floor is then
+  // minDiagonal (1 + |J_i|)^2, which follows the parameter's own units, where
+  // the plain floor is absolute. Off by default; the NIST regression turns it on.
+  bool jacobiScaledDiagonal = false;
 };
 
 struct SolverOptions {

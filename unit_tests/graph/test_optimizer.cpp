@@ -135,6 +135,27 @@ SolverOptions withoutTolerances() {
   return options;
 }
 
+// The Jacobi-scaled damping floor only moves the floor: on a problem whose
+// curvatures stay far above it the solve is the same (up to the rounding of
+// the shift's product), the default one.
+TEST(Optimizer, JacobiScaledDiagonalLeavesAWellCurvedSolveAsItIs) {
+  for (const char* solver : {"lm_dense", "lm_schur_cholmod"}) {
+    Graph plainGraph = makeToyProblem(noisyProblem(6));
+    Graph scaledGraph = makeToyProblem(noisyProblem(6));
+    SolverOptions options = SolverOptions::fromName(solver);
+    options.functionTolerance = 1e-12;
+    ASSERT_FALSE(options.lm.jacobiScaledDiagonal) << "the default damping floor is in the parameters' units";
+    const SolverSummary plain = Optimizer(options).optimize(plainGraph);
+    options.lm.jacobiScaledDiagonal = true;
+    const SolverSummary scaled = Optimizer(options).optimize(scaledGraph);
+    EXPECT_NEAR(scaled.finalCost, plain.finalCost, 1e-9 * plain.finalCost) << solver;
+    EXPECT_NEAR(static_cast<double>(scaled.iterations.size()), static_cast<double>(plain.iterations.size()), 1.0)
+        << solver;
+    const std::vector<double> a = allEstimates(plainGraph), b = allEstimates(scaledGraph);
+    for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k], b[k], 1e-6) << solver << " estimate " << k;
+  }
+}
+
 TEST(Optimizer, MaxIterationsIsRespected) {
   for (const char* algorithm : {"lm", "gn"}) {
     for (int cap : {0, 1, 3}) {
