@@ -48,9 +48,10 @@ demo: build
 # test discovery that runs during the build. With ASan + UBSan on Eigen code, g++'s -O2 -g
 # compiles 5-8 times slower than a Release build (variable tracking for -g is most of it), so
 # RelWithDebInfo here means -O1 with line tables: stack traces keep file and line, and the
-# build fits the CI budget. The packaging test is left to `make test`. The libraries are static
+# build fits the CI budget. The packaging test and the Python package (an extension module would
+# need the ASan runtime preloaded into the interpreter) are left to `make test`. The libraries are static
 # here (shared in `make test`), so the tests also show every plugin registered in a static link.
-SANITIZE_OPTIONS := -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLRSVO_SANITIZE=ON -DLRSVO_BUILD_BENCHMARKS=OFF -DBUILD_SHARED_LIBS=OFF \
+SANITIZE_OPTIONS := -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLRSVO_SANITIZE=ON -DLRSVO_BUILD_BENCHMARKS=OFF -DLRSVO_BUILD_PYTHON=OFF -DBUILD_SHARED_LIBS=OFF \
   '-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG'
 # Left to `make test`: tests that take minutes each under ASan at -O1 (solves repeated for every
 # constraint plugin or start scale; whole rendered flights, the signalled runs of lrsvo_run_interrupted_cli
@@ -77,7 +78,7 @@ sanitize: deps
 FUZZ_DIR := build-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_OPTIONS := -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-  -DLRSVO_FUZZ=ON -DLRSVO_BUILD_TESTS=OFF -DLRSVO_BUILD_BENCHMARKS=OFF \
+  -DLRSVO_FUZZ=ON -DLRSVO_BUILD_TESTS=OFF -DLRSVO_BUILD_BENCHMARKS=OFF -DLRSVO_BUILD_PYTHON=OFF \
   '-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG -fsanitize=fuzzer-no-link,address,undefined'
 # intercept_tls_get_addr=0: as for sanitize above.
 fuzz: export ASAN_OPTIONS := intercept_tls_get_addr=0

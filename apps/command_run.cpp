@@ -67,20 +67,9 @@ void runCommand(const RunCommandOptions& o) {
   if (!o.quiet) options.progress = &std::cerr;
   const StopOnSignal stop;
   options.stop = &stop.requested();
-  RunResult run;
-  GroundTruth truth;
-  if (o.featureLevel) {
-    FeatureLevelFlight flight = simulateFeatureLevel(o.source);
-    printHeader(flight.name, framesInRun(static_cast<int>(flight.frames.size()), o.first, o.frames), flight.rig,
-                options);
-    run = std::move(runOdometry(flight.rig, flight.frames, flight.truth, {options}).front());
-    truth = std::move(flight.truth);
-  } else {
-    std::unique_ptr<FrameSource> source = openSource(o.source);
-    printHeader(source->name(), framesInRun(source->frameCount(), o.first, o.frames), source->rig(), options);
-    run = runOdometry(*source, options);
-    truth = source->groundTruth();
-  }
+  const auto [run, truth] =
+      runSource(o.source, options, o.featureLevel,
+                [&](const std::string& name, int frames, const Rig& rig) { printHeader(name, frames, rig, options); });
   const RunReport report = writeRunReport(options.outDir, run, truth, !o.noPlot);
   printMetrics(report.metrics);
   if (!report.warning.empty()) std::printf("  note: %s\n", report.warning.c_str());

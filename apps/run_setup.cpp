@@ -118,6 +118,26 @@ FeatureLevelFlight simulateFeatureLevel(const std::string& spec) {
   return flight;
 }
 
+SourceRun runSource(const std::string& spec, const RunOptions& options, bool featureLevel,
+                    const std::function<void(const std::string& name, int frames, const Rig& rig)>& onStart) {
+  SourceRun result;
+  if (featureLevel) {
+    FeatureLevelFlight flight = simulateFeatureLevel(spec);
+    if (onStart)
+      onStart(flight.name, framesInRun(static_cast<int>(flight.frames.size()), options.firstFrame, options.maxFrames),
+              flight.rig);
+    result.run = std::move(runOdometry(flight.rig, flight.frames, flight.truth, {options}).front());
+    result.truth = std::move(flight.truth);
+  } else {
+    std::unique_ptr<FrameSource> source = openSource(spec);
+    if (onStart)
+      onStart(source->name(), framesInRun(source->frameCount(), options.firstFrame, options.maxFrames), source->rig());
+    result.run = runOdometry(*source, options);
+    result.truth = source->groundTruth();
+  }
+  return result;
+}
+
 std::string folderName(const std::string& spec) {
   std::string name = spec;
   std::replace_if(

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,6 +51,17 @@ struct FeatureLevelFlight {
   GroundTruth truth;
 };
 FeatureLevelFlight simulateFeatureLevel(const std::string& spec);
+
+// One pass of the odometry over a source spec: rendered or read images
+// (openSource), or with `featureLevel` the feature-level simulation of a sim:
+// source. `onStart` hears the source's name, its frames in this run and its rig
+// before the first frame.
+struct SourceRun {
+  RunResult run;
+  GroundTruth truth;
+};
+SourceRun runSource(const std::string& spec, const RunOptions& options, bool featureLevel,
+                    const std::function<void(const std::string& name, int frames, const Rig& rig)>& onStart = {});
 
 // A name for the output folder made from a source spec ("sim:demo" -> "sim_demo").
 std::string folderName(const std::string& spec);

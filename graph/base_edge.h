@@ -44,6 +44,7 @@ class BaseEdge : public Edge {
   }
 
   int vertexCount() const final { return kVertexCount; }
+  int residualDimension() const final { return R; }
   bool acceptsVertex(int k, const Vertex& vertex) const final { return kAcceptTable[k](vertex); }
 
   template <int K>

@@ -16,6 +16,9 @@ class Edge {
   virtual ~Edge() = default;
 
   virtual int vertexCount() const = 0;
+  // The length of the residual a least-squares edge whitens: its information
+  // matrix is that square. 0 for a cost edge, which has none.
+  virtual int residualDimension() const { return 0; }
   Vertex* vertex(int k) const { return vertices_[k]; }
   const std::vector<Vertex*>& vertices() const { return vertices_; }
   void setVertex(int k, Vertex* vertex) { vertices_.at(k) = vertex; }

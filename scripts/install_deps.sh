@@ -13,6 +13,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-matplotlib python3-numpy
+  python3-dev pybind11-dev python3-pybind11 python3-pytest
   "$@"
 )
 

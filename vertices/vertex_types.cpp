@@ -1,5 +1,8 @@
 #include "lrsvo/vertices/vertex_types.h"
 
+#include <string>
+#include <utility>
+
 #include "lrsvo/graph/registry.h"
 #include "lrsvo/vertices/vertex_bal_camera.h"
 #include "lrsvo/vertices/vertex_extrinsic_rate.h"
@@ -9,8 +12,19 @@
 #include "lrsvo/vertices/vertex_se2.h"
 #include "lrsvo/vertices/vertex_se3_quat.h"
 #include "lrsvo/vertices/vertex_stereo_extrinsic.h"
+#include "lrsvo/vertices/vertex_vector.h"
 
 namespace lrsvo {
+namespace {
+
+template <int... N>
+void addVectorTypes(std::integer_sequence<int, N...>) {
+  (Registry<Vertex>::instance().addType<VertexVector<N + 1>>(VertexVector<N + 1>::kTypeTag,
+                                                             "VertexVector<" + std::to_string(N + 1) + ">"),
+   ...);
+}
+
+}  // namespace
 
 void registerVertexTypes() {
   static const bool registered = [] {
@@ -22,6 +36,7 @@ void registerVertexTypes() {
     LRSVO_ADD_TYPE(Registry<Vertex>::instance(), VertexSE2);
     LRSVO_ADD_TYPE(Registry<Vertex>::instance(), VertexSE3Quat);
     LRSVO_ADD_TYPE(Registry<Vertex>::instance(), VertexStereoExtrinsic);
+    addVectorTypes(std::make_integer_sequence<int, 9>{});
     return true;
   }();
   (void)registered;

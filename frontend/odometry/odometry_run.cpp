@@ -62,6 +62,7 @@ OdometryPipeline::OdometryPipeline(const Rig& rig, const std::vector<LensDistort
     : rig_(rig),
       onBadFrame_(options.onBadFrame),
       progress_(options.progress),
+      onFrame_(options.onFrame),
       odometry_(std::make_unique<Odometry>(rig, options.odometry)),
       frontEnd_(std::make_unique<ImageFrontEnd>(rig, distortion, options.frontEnd)) {
   if (!options.outDir.empty()) writer_ = std::make_unique<RunWriter>(options.outDir, rig, truth, options.firstFrame);
@@ -168,6 +169,7 @@ void OdometryPipeline::write(const FrameEstimate& estimate, const FrontEndTiming
   if (estimate.tracked || estimate.predicted)
     result_.trajectory.add(estimate.time_s, estimate.cameraFromWorld.inverse());
   if (writer_) writer_->write(estimate, timings);
+  if (onFrame_) onFrame_(estimate);
 }
 
 int framesInRun(int sourceFrames, int firstFrame, int maxFrames) {

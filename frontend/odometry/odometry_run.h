@@ -3,6 +3,7 @@
 #include <atomic>
 #include <deque>
 #include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <optional>
@@ -38,6 +39,9 @@ struct RunOptions {
   // kSkip gives it no pose, says why in frames.csv and goes on; kStop ends the
   // run with an lrsvo::Error naming the frame.
   BadFramePolicy onBadFrame = BadFramePolicy::kSkip;
+  // Called with every frame's estimate, in frame order, as it is written (bad
+  // frames included); a caller's own loop reads its poses here.
+  std::function<void(const FrameEstimate&)> onFrame;
 };
 
 // Sums over a run; the odometry's own time excludes reading or rendering frames.
@@ -104,6 +108,7 @@ class OdometryPipeline {
   Rig rig_;
   BadFramePolicy onBadFrame_;
   std::ostream* progress_;
+  std::function<void(const FrameEstimate&)> onFrame_;
   std::unique_ptr<Odometry> odometry_;
   std::unique_ptr<ImageFrontEnd> frontEnd_;
   std::unique_ptr<RunWriter> writer_;

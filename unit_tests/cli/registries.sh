@@ -22,7 +22,7 @@ check "$solvers" lm gn dense cholmod schur_dense schur_cholmod lm_schur_cholmod 
   POSE_SE3 POINT3 STEREO_EXTRINSIC SCALE STEREO_EXTRINSIC_RATE BAL_CAMERA \
   PROJECT_BASE PROJECT_SECONDARY PROJECT_SECONDARY_SCALED PROJECT_SECONDARY_DRIFTING PROJECT_HELD_VIEW \
   SCALE_PRIOR CENTRE_DISTANCE STEREO_EXTRINSIC_RATE_PRIOR BAL_PROJECTION BOUND_BARRIER \
-  POSE_SE2 POSE_SE3_QUAT RELATIVE_POSE_SE2 RELATIVE_POSE_SE3_QUAT
+  POSE_SE2 POSE_SE3_QUAT RELATIVE_POSE_SE2 RELATIVE_POSE_SE3_QUAT VECTOR1 VECTOR9
 studies=$("$lrsvo" study list) || { echo "FAIL: lrsvo study list exited with $?" >&2; exit 1; }
 printf '%s\n' "$studies"
 check "$studies" disparity epipolar triangulation range-bias depth-distribution init-altitude init-scale

@@ -43,7 +43,8 @@ TEST(Registries, EachLibraryRegistersItsGraphFileTypesOnRequest) {
   registerEdgeTypes();  // a second call changes nothing
   const std::set<std::string> vertices = namesIn<Vertex>();
   const std::set<std::string> edges = namesIn<Edge>();
-  for (const char* tag : {"POSE_SE3", "POINT3", "STEREO_EXTRINSIC", "STEREO_EXTRINSIC_RATE", "SCALE", "BAL_CAMERA"})
+  for (const char* tag :
+       {"POSE_SE3", "POINT3", "STEREO_EXTRINSIC", "STEREO_EXTRINSIC_RATE", "SCALE", "BAL_CAMERA", "VECTOR1", "VECTOR9"})
     EXPECT_TRUE(vertices.count(tag)) << tag;
   for (const char* tag : {"PROJECT_BASE", "PROJECT_SECONDARY", "PROJECT_SECONDARY_SCALED", "PROJECT_SECONDARY_DRIFTING",
                           "PROJECT_HELD_VIEW", "SCALE_PRIOR", "CENTRE_DISTANCE", "STEREO_EXTRINSIC_RATE_PRIOR",
