@@ -34,26 +34,30 @@ def test_metrics_equal_lrsvo_eval(run_cli, tmp_path, seed):
     run_cli("eval", tmp_path / "estimate.tum", tmp_path / "truth.tum", "--out", tmp_path / "eval", "--no-plot")
     cli = json.loads((tmp_path / "eval" / "metrics.json").read_text())
 
+    # The files' own numbers, as `lrsvo eval` reads them: the same code on the same doubles, the same figures.
+    metrics = lrsvo.trajectory_metrics(np.loadtxt(tmp_path / "estimate.tum"), np.loadtxt(tmp_path / "truth.tum"))
+    assert metrics["ate_rmse_m"] > 0.0 and metrics["drift_percent"] > 0.0
+    assert_same_figures(cli, metrics, exact=True)
+
+    # read_trajectory hands rotations over as quaternions taken from the matrices it read, a few units of the
+    # last place (~1e-16) off the file's. A figure through them moves by that relative amount, an angle theta
+    # by ~1e-16 / theta rad (theta > 1e-5 rad here): 1e-9 relative; an angle that is zero (the same rotations
+    # in both) is rounding alone, ~1e-14 deg.
     metrics = lrsvo.trajectory_metrics(lrsvo.read_trajectory(str(tmp_path / "estimate.tum")),
                                        lrsvo.read_trajectory(str(tmp_path / "truth.tum")))
-    assert metrics["ate_rmse_m"] > 0.0 and metrics["drift_percent"] > 0.0
-    # The same code on the same poses, but the rotations reach Python as quaternions and are rebuilt as
-    # matrices a few units of the last place (~1e-16) off the file's. A figure through them moves by that
-    # relative amount, an angle theta read from such a matrix by ~1e-16 / theta rad (theta > 1e-5 rad here):
-    # 1e-9 relative; an angle that is zero (the same rotations in both) is rounding alone, ~1e-14 deg.
-    assert_same_figures(cli, metrics)
+    assert_same_figures(cli, metrics, exact=False)
 
 
-def assert_same_figures(expected, actual, where="metrics"):
+def assert_same_figures(expected, actual, exact, where="metrics"):
     if isinstance(actual, dict):
         assert set(actual) <= set(expected), where
         for key, value in actual.items():
-            assert_same_figures(expected[key], value, f"{where}.{key}")
+            assert_same_figures(expected[key], value, exact, f"{where}.{key}")
     elif isinstance(actual, list):
         assert len(actual) == len(expected), where
         for index, (e, a) in enumerate(zip(expected, actual)):
-            assert_same_figures(e, a, f"{where}[{index}]")
-    elif isinstance(actual, float):
+            assert_same_figures(e, a, exact, f"{where}[{index}]")
+    elif isinstance(actual, float) and not exact:
         assert expected == pytest.approx(actual, rel=1e-9, abs=1e-12), where
     else:
         assert expected == actual, where
