@@ -6,7 +6,15 @@
 
 namespace lrsvo {
 
-CholmodBackend::CholmodBackend() {
+namespace {
+
+// The factor's fill, relative to the matrix's, from which METIS is tried too
+// (CHOLMOD's own threshold for it, without the flops-per-entry condition).
+constexpr double kHeavyFill = 5.0;
+
+}  // namespace
+
+CholmodBackend::CholmodBackend(CholmodOrdering ordering) : ordering_(ordering) {
   cholmod_start(&common_);
   common_.print = 0;
   common_.supernodal = CHOLMOD_SUPERNODAL;
@@ -69,6 +77,46 @@ void CholmodBackend::analyze(const std::vector<int>& blockDims, const std::vecto
   setZero();
   factor_ = cholmod_analyze(matrix_, &common_);
   if (!factor_) throw Error("cholmod: symbolic analysis failed");
+  factorizationFlops_ = common_.fl;
+  if (ordering_ == CholmodOrdering::kLeastWork) {
+    // The upper triangle's entries: diagonal blocks are stored whole.
+    double upperEntries = static_cast<double>(nnz);
+    for (int d : blockDims) upperEntries -= 0.5 * d * (d - 1);
+    tryNestedDissection(upperEntries);
+  }
+}
+
+void CholmodBackend::tryNestedDissection(double matrixEntries) {
+  if (factor_->ordering != CHOLMOD_AMD || common_.lnz < kHeavyFill * matrixEntries) return;
+  const int methods = common_.nmethods;
+  const int ordering = common_.method[0].ordering;
+  common_.nmethods = 1;
+  common_.method[0].ordering = CHOLMOD_METIS;
+  cholmod_factor* metis = cholmod_analyze(matrix_, &common_);
+  common_.nmethods = methods;
+  common_.method[0].ordering = ordering;
+  if (!metis) return;  // METIS failed or is missing: AMD's ordering stands
+  if (common_.fl < factorizationFlops_) {
+    cholmod_free_factor(&factor_, &common_);
+    factor_ = metis;
+    factorizationFlops_ = common_.fl;
+  } else {
+    cholmod_free_factor(&metis, &common_);
+  }
+}
+
+const char* CholmodBackend::orderingName() const {
+  if (!factor_) return "none";
+  switch (factor_->ordering) {
+    case CHOLMOD_NATURAL: return "natural";
+    case CHOLMOD_GIVEN: return "given";
+    case CHOLMOD_AMD: return "amd";
+    case CHOLMOD_METIS: return "metis";
+    case CHOLMOD_NESDIS: return "nesdis";
+    case CHOLMOD_COLAMD: return "colamd";
+    case CHOLMOD_POSTORDERED: return "postordered";
+    default: return "unknown";
+  }
 }
 
 void CholmodBackend::setZero() { std::fill_n(static_cast<double*>(matrix_->x), matrix_->nzmax, 0.0); }
