@@ -34,6 +34,22 @@ auto selectKernel(int di, int dj) {
   return &subtractProduct<X, DL, X>;
 }
 
+// Splits rows [0, work.size()) into at most `parts` contiguous ranges of about
+// equal total work; returns the ranges' boundaries, first 0, last the row count.
+std::vector<int> balancedRanges(const std::vector<double>& work, int parts) {
+  double total = 0.0;
+  for (double w : work) total += w;
+  const int rows = static_cast<int>(work.size());
+  std::vector<int> bounds{0};
+  double done = 0.0;
+  for (int i = 0; i + 1 < rows; ++i) {
+    done += work[i];
+    if (done >= total * static_cast<double>(bounds.size()) / parts) bounds.push_back(i + 1);
+  }
+  bounds.push_back(rows);
+  return bounds;
+}
+
 }  // namespace
 
 template <int DL>
@@ -112,6 +128,9 @@ void SchurSolver::analyze(const BlockSystem& system) {
       }
     }
   }
+  rowWork_.assign(freeCount, 0.0);
+  for (int i = 0; i < freeCount; ++i)
+    rowWork_[i] = static_cast<double>(rowUpdates_[i].size() + rowCopies_[i].size() + rowCouplings_[i].size());
 
   yOffsets_.assign(blocks.size(), 0);
   std::size_t ySize = 0;
@@ -138,11 +157,34 @@ void SchurSolver::analyze(const BlockSystem& system) {
   if (freeCount > 0) backend_->analyze(dims, pairs);
 }
 
+void SchurSolver::reduceRow(const BlockSystem& system, const Eigen::VectorXd& rhs, int i, Eigen::VectorXd& reducedRhs) {
+  const auto& blocks = system.blocks();
+  const int di = system.dim(i);
+  for (const Copy& copy : rowCopies_[i]) {
+    const auto target = backend_->block(copy.target);
+    const auto& source = blocks[copy.source];
+    const int dj = system.dim(source.col);
+    Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>(target.data, di, dj, Eigen::OuterStride<>(target.ld)) +=
+        Eigen::Map<const Eigen::MatrixXd>(system.values(source), di, dj);
+  }
+  for (const Update& update : rowUpdates_[i]) {
+    const auto target = backend_->block(update.target);
+    const auto& w = blocks[update.w];
+    update.kernel(yValues_.data() + yOffsets_[update.y], system.values(w), target.data, target.ld, di,
+                  system.dim(w.col), system.dim(w.row));
+  }
+  auto ri = reducedRhs.segment(system.offset(i), di);
+  for (int k : rowCouplings_[i]) {
+    const int l = blocks[k].col, dl = system.dim(l);
+    ri.noalias() -=
+        Eigen::Map<const Eigen::MatrixXd>(yValues_.data() + yOffsets_[k], di, dl) * rhs.segment(system.offset(l), dl);
+  }
+}
+
 bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) {
   Stopwatch phase;
   const int freeCount = system.freeCount();
   const int marginalCount = system.blockCount() - freeCount;
-  const auto& blocks = system.blocks();
 
   // V^-1 per marginalised vertex and Y = W V^-1 per coupling.
   std::vector<char> positive(marginalCount, 1);
@@ -153,30 +195,16 @@ bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, E
   for (char p : positive)
     if (!p) return false;
 
-  // Reduced system, one row of blocks per task.
+  // Reduced system, by rows of blocks. Row i holds the updates of every j >= i,
+  // so the rows' costs fall along S: each task takes a contiguous range of
+  // rows of about equal work (a few per thread, handed out as threads come
+  // free). Contiguous, so that two threads seldom write neighbouring blocks of
+  // one column of S, which share cache lines.
   if (freeCount > 0) backend_->setZero();
   Eigen::VectorXd reducedRhs = rhs.head(system.freeScalarCount());
-  parallelFor(0, freeCount, threads, [&](int i) {
-    const int di = system.dim(i);
-    for (const Copy& copy : rowCopies_[i]) {
-      const auto target = backend_->block(copy.target);
-      const auto& source = blocks[copy.source];
-      const int dj = system.dim(source.col);
-      Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>(target.data, di, dj, Eigen::OuterStride<>(target.ld)) +=
-          Eigen::Map<const Eigen::MatrixXd>(system.values(source), di, dj);
-    }
-    for (const Update& update : rowUpdates_[i]) {
-      const auto target = backend_->block(update.target);
-      const auto& w = blocks[update.w];
-      update.kernel(yValues_.data() + yOffsets_[update.y], system.values(w), target.data, target.ld, di,
-                    system.dim(w.col), system.dim(w.row));
-    }
-    auto ri = reducedRhs.segment(system.offset(i), di);
-    for (int k : rowCouplings_[i]) {
-      const int l = blocks[k].col, dl = system.dim(l);
-      ri.noalias() -=
-          Eigen::Map<const Eigen::MatrixXd>(yValues_.data() + yOffsets_[k], di, dl) * rhs.segment(system.offset(l), dl);
-    }
+  const std::vector<int> ranges = balancedRanges(rowWork_, 4 * threads);
+  parallelFor(0, static_cast<int>(ranges.size()) - 1, threads, 1, [&](int range) {
+    for (int i = ranges[range]; i < ranges[range + 1]; ++i) reduceRow(system, rhs, i, reducedRhs);
   });
   const double reduceSeconds = phase.lap();
 

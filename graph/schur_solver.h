@@ -18,7 +18,8 @@ namespace lrsvo {
 // marginalised vertex, and no other: a vertex shared by every pose (the
 // stereo extrinsic, kappa) is one dense block row and column, so S is an
 // arrowhead over the pose blocks and stays sparse for the CHOLMOD backend.
-// Work is split by rows of S so that threads never write the same block.
+// Work is split by contiguous ranges of rows of S, so that threads never
+// write the same block.
 class SchurSolver : public LinearSolver {
  public:
   explicit SchurSolver(std::unique_ptr<SymmetricBackend> backend) : backend_(std::move(backend)) {}
@@ -45,6 +46,8 @@ class SchurSolver : public LinearSolver {
   // V^-1 and Y = W V^-1 for marginalised vertex l; false if V is not positive definite.
   template <int DL>
   bool invertMarginal(const BlockSystem& system, int l);
+  // Row i of S and of the reduced right-hand side.
+  void reduceRow(const BlockSystem& system, const Eigen::VectorXd& rhs, int i, Eigen::VectorXd& reducedRhs);
   // x_l = V^-1 (r_l - sum_i W_il^T x_i).
   template <int DL>
   void backSubstitute(const BlockSystem& system, const Eigen::VectorXd& rhs, const Eigen::VectorXd& xFree, int l,
@@ -56,6 +59,7 @@ class SchurSolver : public LinearSolver {
   std::vector<std::vector<Copy>> rowCopies_;
   std::vector<std::vector<int>> rowCouplings_;       // per free row i: system blocks (i, l)
   std::vector<std::vector<int>> marginalCouplings_;  // per marginalised l: system blocks (i, l)
+  std::vector<double> rowWork_;                      // per free row i: its blocks' count, the cost of reduceRow
   std::vector<std::size_t> yOffsets_;                // per system block: offset of Y, if a coupling
   std::vector<double> yValues_;
   std::vector<std::size_t> vInverseOffsets_;  // per marginalised vertex
