@@ -67,7 +67,7 @@ void run(const BalCommandOptions& o) {
   SolverOptions solverOptions = SolverOptions::fromName(o.solver);
   solverOptions.threads = o.threads;
   solverOptions.maxIterations = o.maxIterations;
-  solverOptions.lm.damping = o.damping == "additive" ? Damping::kAdditive : Damping::kMultiplicative;
+  solverOptions.lm.damping = dampingFromName(o.damping);
   solverOptions.verbose = o.verbose;
   const Optimizer optimizer(solverOptions);
 

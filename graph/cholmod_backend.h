@@ -15,12 +15,11 @@ namespace lrsvo {
 //
 // The fill-reducing ordering: CHOLMOD's own choice is AMD, with METIS tried
 // beside it only when AMD's factor is both much fuller than the matrix and
-// dense in flops per entry. Pose graphs fill in heavily at fewer flops per
-// entry, where nested dissection still cuts the work (docs/pose_graphs.md);
-// so kLeastWork also tries METIS whenever the factor is at least five times
-// as full as the matrix, and keeps the ordering whose factorisation takes
-// fewer flops. Systems without such fill (the window's, BAL's reduced camera
-// systems) never pay for METIS.
+// dense in flops per entry. Lattices such as pose graphs fill in heavily at
+// fewer flops per entry, where nested dissection still cuts the work
+// (unit_tests/graph/test_cholmod_ordering.cpp); so kLeastWork also tries METIS whenever the factor is at least five
+// times as full as the matrix, and keeps the ordering whose factorisation takes fewer flops. Systems without such fill
+// (the window's, BAL's reduced camera systems) never pay for METIS.
 enum class CholmodOrdering { kLeastWork, kAmd };
 
 class CholmodBackend : public SymmetricBackend {

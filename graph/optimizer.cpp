@@ -48,6 +48,12 @@ struct ConstraintScope {
 
 }  // namespace
 
+Damping dampingFromName(const std::string& name) {
+  if (name == "multiplicative") return Damping::kMultiplicative;
+  if (name == "additive") return Damping::kAdditive;
+  throw Error("damping must be 'multiplicative' or 'additive', got '" + name + "'");
+}
+
 SolverOptions SolverOptions::fromName(const std::string& name) {
   SolverOptions options;
   const auto split = name.find('_');

@@ -11,6 +11,9 @@ enum class Damping {
   kAdditive,        // diag(H) + lambda
 };
 
+// "multiplicative" or "additive"; throws lrsvo::Error on any other name.
+Damping dampingFromName(const std::string& name);
+
 // Levenberg-Marquardt's own settings. A step is taken when its gain (actual
 // over predicted decrease) exceeds minRelativeDecrease; lambda then shrinks by
 // Nielsen's rule, otherwise it grows geometrically (2, 4, 8, ... times).

@@ -1,6 +1,7 @@
 // lrsvo.Graph: vertices and edges of the registered types by tag, estimates
 // and measurements as numpy arrays, Python residuals, bounds, solves by name,
 // and the graph and g2o files.
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -90,10 +91,7 @@ std::string edgeData(const Edge& edge, const Eigen::VectorXd& parameters,
                   std::to_string(omega.cols()));
     if (!omega.isApprox(omega.transpose())) throw Error("the information matrix is not symmetric");
     writeUpperTriangle(data, omega);
-    if (kernel.empty())
-      data << " NONE";
-    else
-      writeKernel(data, makeRobustKernel(kernel, delta).get());
+    writeKernel(data, kernelOf(kernel, delta).get());
   } else if (information || !kernel.empty()) {
     throw Error("an information matrix or a kernel needs a measurement");
   }
@@ -102,15 +100,20 @@ std::string edgeData(const Edge& edge, const Eigen::VectorXd& parameters,
 
 // How many values of parameters and measurement a least-squares edge type
 // reads: its default data less the information's upper triangle and the
-// kernel's "NONE". Counted, so the sizes are checked before any is misread.
+// kernel's "NONE". Counted, so the sizes are checked before any is misread;
+// once per type (add_edge holds the GIL, so the table is never shared).
 int leadingValueCount(const Edge& edge) {
+  static std::map<std::string, int> countByType;
+  const auto [known, inserted] = countByType.try_emplace(edge.typeTag(), 0);
+  if (!inserted) return known->second;
   std::ostringstream data;
   edge.writeData(data);
   std::istringstream tokens(data.str());
   int count = 0;
   for (std::string token; tokens >> token;) ++count;
   const int dimension = edge.residualDimension();
-  return count - dimension * (dimension + 1) / 2 - 1;
+  known->second = count - dimension * (dimension + 1) / 2 - 1;
+  return known->second;
 }
 
 void addEdge(Graph& graph, const std::string& type, const std::vector<int>& ids,
@@ -159,9 +162,7 @@ SolverSummary optimize(Graph& graph, const std::string& solver, int maxIteration
   options.gradientTolerance = gradientTolerance;
   options.parameterTolerance = parameterTolerance;
   options.maxSeconds = maxSeconds;
-  if (damping != "multiplicative" && damping != "additive")
-    throw Error("damping must be 'multiplicative' or 'additive', got '" + damping + "'");
-  options.lm.damping = damping == "additive" ? Damping::kAdditive : Damping::kMultiplicative;
+  options.lm.damping = dampingFromName(damping);
   options.verbose = verbose;
   if (bounds.empty()) {
     const Optimizer optimizer(options);

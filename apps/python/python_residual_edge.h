@@ -16,7 +16,7 @@ namespace lrsvo::python {
 // returns the residual (any array-like of `dimension` numbers). Jacobians are
 // central differences through each vertex's own update, so it works on every
 // vertex type. Each evaluation takes the GIL and calls into Python: for
-// prototyping a model, a few hundred to thousands of times slower than a C++ edge.
+// prototyping a model, many times slower than a C++ edge (scripts/bench_python.py).
 // Hidden, as the pybind11 objects it holds are: it never leaves the module.
 class __attribute__((visibility("hidden"))) PythonResidualEdge final : public Edge {
  public:

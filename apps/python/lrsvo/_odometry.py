@@ -30,7 +30,7 @@ class RunResult:
     frames: per input frame, numpy columns as frames.csv holds them (frame, time_s, status, segment,
         keyframe, pose_inliers, window_rms_px, ..., pose N x 8 and extrinsics N x 6k, NaN without a value).
     metrics: metrics.json's dict (frames_tracked, fps, and with ground truth ate_rmse_m, drift_percent, ...).
-    truth: the source's true poses (N x 8), empty when it has none.
+    truth: the source's true poses over the frames run (N x 8), empty when it has none.
     stopped: Ctrl-C or SIGTERM ended the run early; everything covers the frames done.
     warning: why metrics or plots are missing, if they are.
     """
