@@ -32,6 +32,7 @@ CONDITIONS = [  # key, what, source, extra options
     ("exposure", "exposure jumps of +-30 %", "sim:sim/scenarios/exposure.yaml", []),
     ("bad_frames", "blank, corrupt, dropped frames", "sim:sim/scenarios/bad_frames.yaml", []),
     ("dark", "dark frames: 1, 2 and 5 in a row", "sim:sim/scenarios/dark_frames.yaml", []),
+    ("gap", "3 s holes: 90 frames dropped, 90 blank", "sim:sim/scenarios/gap.yaml", []),
     ("stress", "sim:stress (all of them, 30-150 m)", "sim:stress", []),
     ("euroc", "EuRoC V1_01 (real, still, 1-5 m)", EUROC, ["--min-depth", "0.5"]),
     ("paper", "smooth (sim:paper, 9600 frames, 37-118 m)", "sim:paper", []),  # minutes a run

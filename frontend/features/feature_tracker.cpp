@@ -53,12 +53,14 @@ FeatureTracker::FeatureTracker(const FeatureTrackerOptions& options) : options_(
   if (!(options.brightnessTolerance >= 0.0)) throw Error("feature tracker: brightnessTolerance must be >= 0");
   if (!(options.descriptorRatio > 0.0 && options.descriptorRatio <= 1.0))
     throw Error("feature tracker: descriptorRatio must lie in (0, 1]");
+  if (!(options.minReviveOverlap >= 0.0 && options.minReviveOverlap <= 1.0))
+    throw Error("feature tracker: minReviveOverlap must lie in [0, 1]");
+  if (!(options.reviveWithin_s >= 0.0)) throw Error("feature tracker: reviveWithin_s must be >= 0");
 }
 
 const std::vector<Track>& FeatureTracker::track(const KltImage& image, double time_s) {
   statistics_ = {};
   for (Track& t : tracks_) ++t.age;
-  if (broken_ && time_s - broken_->time_s > options_.reviveWithin_s) broken_.reset();
   if (detector_.hasDescriptors()) {
     const Stopwatch detectStart;
     DetectedFeatures candidates = detector_.detect(image.image, {}, 2 * options_.targetFeatures);
@@ -72,7 +74,7 @@ const std::vector<Track>& FeatureTracker::track(const KltImage& image, double ti
     const Stopwatch trackStart;
     const double mean = cv::mean(image.image)[0];
     followByKlt(image, mean);
-    if (broken_) revive(image, mean);
+    if (broken_) revive(image, mean, time_s);
     previousMean_ = mean;
     statistics_.track_ms = trackStart.milliseconds();
     statistics_.tracked = static_cast<int>(tracks_.size());
@@ -83,9 +85,16 @@ const std::vector<Track>& FeatureTracker::track(const KltImage& image, double ti
       statistics_.detect_ms = detectStart.milliseconds();
     }
   }
+  previousInterval_s_ = previous_.image.empty() ? 0.0 : time_s - previousTime_;
   previous_ = image;
   previousTime_ = time_s;
   return tracks_;
+}
+
+double FeatureTracker::predictedOverlap(const Broken& broken, cv::Size imageSize, double time_s) const {
+  const cv::Point2f shift = broken.velocity_px_s * static_cast<float>(time_s - broken.time_s);
+  return std::max(0.0, 1.0 - std::abs(shift.x) / imageSize.width) *
+         std::max(0.0, 1.0 - std::abs(shift.y) / imageSize.height);
 }
 
 std::vector<cv::Point2f> FeatureTracker::predictedPixels() const {
@@ -118,8 +127,12 @@ void FeatureTracker::followByKlt(const KltImage& image, double imageMean) {
   }
   // A break within a break (a second unusable image) keeps the last good image.
   if (!broken_ &&
-      static_cast<double>(count(found)) < options_.realignBelowFraction * static_cast<double>(points.size()))
-    broken_ = Broken{previous_.image, previousMean_, previousTime_, tracks_, nextId_, std::nullopt};
+      static_cast<double>(count(found)) < options_.realignBelowFraction * static_cast<double>(points.size())) {
+    const cv::Point2f velocity = previousInterval_s_ > 0.0
+                                     ? medianMotion(tracks_) * static_cast<float>(1.0 / previousInterval_s_)
+                                     : cv::Point2f(0.0f, 0.0f);
+    broken_ = Broken{previous_.image, previousMean_, previousTime_, tracks_, nextId_, velocity, std::nullopt};
+  }
   std::vector<Track> kept;
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
     if (!found[i]) continue;
@@ -130,8 +143,13 @@ void FeatureTracker::followByKlt(const KltImage& image, double imageMean) {
   tracks_ = std::move(kept);
 }
 
-void FeatureTracker::revive(const KltImage& image, double imageMean) {
+void FeatureTracker::revive(const KltImage& image, double imageMean, double time_s) {
   Broken& broken = *broken_;
+  const double overlap = predictedOverlap(broken, image.image.size(), time_s);
+  if (time_s - broken.time_s > options_.reviveWithin_s || overlap <= 0.0 || overlap < options_.minReviveOverlap) {
+    broken_.reset();
+    return;
+  }
   if (!broken.described) broken.described = describeImage(broken.image, options_.alignment);
   const ImageAlignment alignment =
       alignByDescriptors(*broken.described, describeImage(image.image, options_.alignment), options_.alignment);
@@ -172,7 +190,10 @@ void FeatureTracker::revive(const KltImage& image, double imageMean) {
   statistics_.revived = static_cast<int>(revived.size());
   tracks_.insert(tracks_.end(), revived.begin(), revived.end());
   std::sort(tracks_.begin(), tracks_.end(), [](const Track& a, const Track& b) { return a.id < b.id; });
-  if (statistics_.revived >= options_.alignment.minInliers) broken_.reset();
+  // Once the images align the search is over, however many were found: the
+  // overlap only shrinks from here, and a later find would replace tracks the
+  // odometry may by then have started a new map from.
+  broken_.reset();
 }
 
 // Each track takes the candidate with the nearest descriptor inside the search

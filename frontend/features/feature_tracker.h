@@ -34,13 +34,17 @@ struct FeatureTrackerOptions {
   double brightnessTolerance = 0.05;
   // "klt": a break is a frame where even the shift keeps fewer than
   // realignBelowFraction of the tracks (a yaw step rotates the image, an
-  // unusable image in between). The tracks of the last image before it are
-  // then looked for again, in that frame and each later one for up to
-  // reviveWithin_s: that image is aligned to the new one by ORB matches
-  // (descriptor_alignment.h), warped onto it, and KLT finds the lost tracks
-  // there, under their old ids, so the odometry's map still knows them.
+  // unusable image in between, a gap in the stream). The tracks of the last
+  // image before it are then looked for again, in that frame and each later
+  // one, for as long as the image motion before the break, carried on at its
+  // rate in pixels per second, leaves at least minReviveOverlap of that image
+  // in view (and for at most reviveWithin_s): that image is aligned to the new
+  // one by ORB matches (descriptor_alignment.h), warped onto it, and KLT finds
+  // the lost tracks there, under their old ids, so the odometry's map still
+  // knows them.
   DescriptorAlignmentOptions alignment;
-  double reviveWithin_s = 2.0;
+  double minReviveOverlap = 0.1;
+  double reviveWithin_s = 10.0;
   double descriptorSearch_px = 40.0;  // "descriptor": radius around the predicted position
   double descriptorRatio = 0.8;       // best distance below this times the second best
   int maxHamming = 64;                // "descriptor": worst accepted distance (of 256 bits)
@@ -90,11 +94,11 @@ class FeatureTracker {
   // `imageMean`: the image's mean grey level. A break keeps the tracks before
   // it in broken_.
   void followByKlt(const KltImage& image, double imageMean);
-  // Finds broken_'s tracks again in `image` (FeatureTrackerOptions::alignment):
-  // when the images align, each takes its aligned position or is dropped.
-  // Forgets broken_ once enough are found (track() forgets it once
-  // reviveWithin_s has passed).
-  void revive(const KltImage& image, double imageMean);
+  // Finds broken_'s tracks again in `image`, taken at time_s
+  // (FeatureTrackerOptions::alignment): when the images align, each takes its
+  // aligned position or is dropped. Forgets broken_ once the images align, or
+  // once its image is predicted out of view or reviveWithin_s has passed.
+  void revive(const KltImage& image, double imageMean, double time_s);
   // The previous image, or, after an exposure step, that image brought to the
   // brightness of `next` (FeatureTrackerOptions::brightnessTolerance).
   KltImage previousWithBrightnessOf(const KltImage& next, double nextMean) const;
@@ -107,6 +111,7 @@ class FeatureTracker {
   KltImage previous_;
   double previousMean_ = 0.0;  // previous_'s mean grey level ("klt")
   double previousTime_ = 0.0;
+  double previousInterval_s_ = 0.0;  // from the image before previous_ to it: the span of the tracks' motion
   // The last image before a break, with its tracks, while they are looked for.
   struct Broken {
     cv::Mat image;
@@ -114,8 +119,12 @@ class FeatureTracker {
     double time_s = 0.0;
     std::vector<Track> tracks;
     int firstNewId = 0;                       // of the tracks born since
+    cv::Point2f velocity_px_s;                // the tracks' median motion before the break
     std::optional<DescribedImage> described;  // computed on the first search
   };
+  // The fraction of broken's image that its motion, carried on to time_s,
+  // leaves inside an image of `imageSize`.
+  double predictedOverlap(const Broken& broken, cv::Size imageSize, double time_s) const;
   std::optional<Broken> broken_;
   int nextId_ = 0;
   TrackerStatistics statistics_;

@@ -94,8 +94,11 @@ struct OdometryOptions {
   // After a loss, each frame up to this long after the last measured pose is
   // first posed against the lost segment's map (P3P in MLESAC on the tracks
   // the front end found again, FeatureTrackerOptions::alignment); a pose takes
-  // the segment up again in the same world. 0: a loss always starts a new segment.
-  double relocaliseWithin_s = 2.0;
+  // the segment up again in the same world. A frame without old tracks costs
+  // nothing here: the image front end ends the search sooner, once the image
+  // before the break is predicted out of view (the same 10 s at most).
+  // 0: a loss always starts a new segment.
+  double relocaliseWithin_s = 10.0;
 
   // Where stereo sees depth (close range, low flight), the odometry starts at
   // once from one frame's stereo structure instead (stereo_start.h).

@@ -219,6 +219,57 @@ TEST(FeatureTracker, FindsItsTracksAgainAfterAnUnusableImage) {
   expectRevivedInPlace(expected, tracker.tracks(), tracker.lastStatistics().revived, 0.8);
 }
 
+// The 640x480 view of a wide canvas whose content is moved by dx (0-1300 px)
+// along x from the view at (1300, 160).
+cv::Mat viewAlongStrip(const cv::Mat& canvas, int dx) { return canvas(cv::Rect(1300 - dx, 160, 640, 480)).clone(); }
+
+// The images of a camera whose view moves `step_px` along x every 0.1 s,
+// from time 0: the tracker's tracks after the image at `last_s`.
+std::vector<Track> trackAlongStrip(FeatureTracker& tracker, const cv::Mat& canvas, double last_s, int step_px,
+                                   const KltOptions& klt) {
+  for (int k = 0; 0.1 * k <= last_s + 1e-9; ++k)
+    tracker.track(makeKltImage(viewAlongStrip(canvas, step_px * k), klt), 0.1 * k);
+  return tracker.tracks();
+}
+
+// A hole of 2.5 s in the stream: the first image after it has moved 500 px,
+// and shares a strip of 140 px (22 %) with the last one before, which the
+// motion before the hole, carried on, predicts in view: the tracks in that
+// strip are found again, under their ids.
+TEST(FeatureTracker, FindsItsTracksAgainAcrossAGapInTheStream) {
+  const cv::Mat canvas = multiScaleCanvas(2000, 800, 20);
+  FeatureTrackerOptions options;
+  FeatureTracker tracker(options);
+  const std::vector<Track> before = trackAlongStrip(tracker, canvas, 0.4, 20, options.klt);
+  const auto expected = expectedAfter(
+      before, [&](const cv::Point2f& p) { return p + cv::Point2f(500.0f, 0.0f); }, options.klt);
+  ASSERT_GE(expected.inside, options.alignment.minInliers);
+  tracker.track(makeKltImage(viewAlongStrip(canvas, 80 + 500), options.klt), 2.9);
+  expectRevivedInPlace(expected, tracker.tracks(), tracker.lastStatistics().revived, 0.8);
+}
+
+// Once the motion before a break, carried on, leaves less than
+// minReviveOverlap of the last image before it in view, its tracks are no
+// longer looked for, even in an image that does show them (the camera
+// stopped): at 400 px/s, 1.7 s after the break the prediction is 680 px on,
+// past the 640 px image. The same image 1.2 s after (480 px predicted: 25 %
+// in view) has them found again.
+TEST(FeatureTracker, StopsLookingOnceTheImageBeforeTheBreakIsPredictedOutOfView) {
+  const cv::Mat canvas = multiScaleCanvas(2000, 800, 21);
+  for (const double after_s : {1.2, 1.7}) {
+    FeatureTrackerOptions options;
+    FeatureTracker tracker(options);
+    trackAlongStrip(tracker, canvas, 0.4, 40, options.klt);
+    tracker.track(makeKltImage(viewMovedBy(multiScaleCanvas(1100, 800, 22), 0, 0), options.klt), 0.5);
+    tracker.track(makeKltImage(viewAlongStrip(canvas, 160), options.klt), 0.4 + after_s);
+    if (after_s < 1.5) {
+      EXPECT_GE(tracker.lastStatistics().revived, options.alignment.minInliers);
+    } else {
+      EXPECT_EQ(tracker.lastStatistics().revived, 0);
+    }
+  }
+}
+
 // Past reviveWithin_s the tracks before a break are no longer looked for.
 TEST(FeatureTracker, ForgetsABreakAfterReviveWithin) {
   const cv::Mat canvas = multiScaleCanvas(1100, 800, 17);

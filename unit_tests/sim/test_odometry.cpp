@@ -277,6 +277,47 @@ TEST(OdometryFlight, RelocalisesAgainstTheLostSegmentsMap) {
   EXPECT_LT(error(blackout + 3), neighbours + 0.05);
 }
 
+// A hole of `gap` frames in a 160 m flight, after which the front end finds
+// `kept` of the lost map's tracks again, spread over those still in view.
+// Every other track gets a new id from the hole on: to the odometry it is new.
+SimulatedSequence withTracksFoundAgain(std::uint64_t seed, int hole, int gap, int kept) {
+  SimulatedSequence sequence = odometryFlight(160.0, seed);
+  for (int i = hole; i < hole + gap; ++i) sequence.frames[i].observations.clear();
+  std::set<int> seenBefore;
+  std::vector<int> common;
+  for (const Observation& o : sequence.frames[hole - 1].observations) seenBefore.insert(o.track);
+  for (const Observation& o : sequence.frames[hole + gap].observations)
+    if (o.camera == 0 && seenBefore.count(o.track)) common.push_back(o.track);
+  std::set<int> found;
+  for (int k = 0; k < kept && k < static_cast<int>(common.size()); ++k)
+    found.insert(common[static_cast<std::size_t>(k) * common.size() / static_cast<std::size_t>(kept)]);
+  constexpr int kNewIds = 1000000;
+  for (std::size_t i = hole; i < sequence.frames.size(); ++i)
+    for (Observation& o : sequence.frames[i].observations)
+      if (!found.count(o.track)) o.track += kNewIds;
+  return sequence;
+}
+
+// A loss of 2.5 s (75 frames, 50 m of flight at 20 m/s: about a third of the
+// ground in view is still in view after it), and 40 of the lost map's tracks
+// found again in the first frame after it: that frame is posed against the
+// lost map and takes the segment up again. Three flights.
+TEST(OdometryFlight, RelocalisesAfterALossOfSeconds) {
+  const int hole = 70, gap = 75;
+  for (const std::uint64_t seed : {4, 5, 6}) {
+    SCOPED_TRACE("flight seed " + std::to_string(seed));
+    const SimulatedSequence sequence = withTracksFoundAgain(seed, hole, gap, 40);
+    const std::vector<FrameEstimate> estimates = runOver(sequence.frames, sequence.rig, OdometryOptions{});
+    ASSERT_EQ(estimates.size(), sequence.frames.size());
+    const FrameEstimate& back = estimates[hole + gap];
+    EXPECT_TRUE(back.tracked);
+    EXPECT_TRUE(back.relocalised);
+    EXPECT_EQ(back.segment, 0);
+    EXPECT_NE(back.note.find("2.5"), std::string::npos) << back.note;  // the time since the last measured pose
+    for (int i = 0; i < hole + gap; ++i) EXPECT_FALSE(estimates[i].relocalised) << "frame " << i;
+  }
+}
+
 // Given each frame's base observations and its secondary ones on request (as the
 // image front end gives them, stereo matching being costly), the odometry asks
 // only for the frames it keeps and estimates exactly what it does from whole frames.
