@@ -65,6 +65,11 @@ void OdometrySettings::addOptions(CLI::App& command) {
       ->capture_default_str();
   command.add_option("--solver", solver, "Solver of the window adjustment (lrsvo solvers lists them)")
       ->capture_default_str();
+  command
+      .add_option("--threads", threads,
+                  "Threads of the window adjustment; the estimates are the same for any count, bit for bit")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   command.add_option("--seed", seed, "Seed of every random draw (RANSAC, MLESAC)")->capture_default_str();
   command
       .add_option("--on-bad-frame", onBadFrame,
@@ -82,6 +87,7 @@ RunOptions OdometrySettings::runOptions() const {
   odometry.scaleDriftPerKeyframe = scaleDrift;
   odometry.extrinsicRateSigma = extrinsicRate;
   odometry.solver.setName(solver);
+  odometry.solver.threads = threads;
   odometry.seed = seed;
   odometry.outliers.sigmas = outlierSigmas;
   if (rigid)

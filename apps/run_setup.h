@@ -30,6 +30,7 @@ struct OdometrySettings {
   double outlierSigmas = OutlierTestOptions{}.sigmas;
   double minDepth_m = 20.0;
   std::string solver = OdometryOptions{}.solver.name();
+  int threads = OdometryOptions{}.solver.threads;
   std::uint64_t seed = 1;
   std::string onBadFrame = "skip";
 

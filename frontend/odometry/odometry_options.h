@@ -64,9 +64,11 @@ struct OdometryOptions {
   // cold start (mu decreased over rounds) would only repeat the solve.
   ConstraintSettings constraintSettings{.start = StartPolicy::kProject};
   // Each window adjustment: warm-started, it rarely needs more than 10 iterations; it stops
-  // when the cost changes by less than 1e-5 of itself. Threads: of the linearisation and
-  // the Schur complement.
-  SolverOptions solver{.linearSolver = "schur_dense", .lm = {}, .maxIterations = 10, .functionTolerance = 1e-5};
+  // when the cost changes by less than 1e-5 of itself. Two threads (the linearisation,
+  // the Hessian and the Schur complement), for the two cores the odometry is built for:
+  // the estimates are the same for any count, bit for bit.
+  SolverOptions solver{
+      .linearSolver = "schur_dense", .lm = {}, .maxIterations = 10, .functionTolerance = 1e-5, .threads = 2};
   BundleGraphOptions bundle;
   // After each window adjustment, an observation whose reprojection error
   // exceeds the window's threshold (outlier_threshold.h: 4 sigma of the

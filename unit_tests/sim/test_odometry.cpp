@@ -372,6 +372,29 @@ TEST(OdometryFlight, FetchesSecondaryObservationsOnlyForTheFramesItKeeps) {
   EXPECT_LT(fetched.size(), 0.6 * static_cast<double>(whole.size()));
 }
 
+// The window adjustment runs on two threads by default. The work is split by
+// item, never by thread, and every sum is taken in the same order: the
+// estimates are the same for one thread as for two, bit for bit.
+TEST(OdometryFlight, EstimatesDoNotDependOnTheThreadCount) {
+  const SimulatedSequence sequence = odometryFlight(60.0, 4);
+  OdometryOptions one;
+  one.solver.threads = 1;
+  EXPECT_EQ(OdometryOptions{}.solver.threads, 2);
+  const std::vector<FrameEstimate> single = runOver(sequence.frames, sequence.rig, one);
+  const std::vector<FrameEstimate> two = runOver(sequence.frames, sequence.rig, OdometryOptions{});
+  ASSERT_EQ(single.size(), two.size());
+  int tracked = 0;
+  for (std::size_t i = 0; i < single.size(); ++i) {
+    ASSERT_EQ(single[i].tracked, two[i].tracked) << "frame " << i;
+    tracked += single[i].tracked;
+    EXPECT_TRUE(single[i].cameraFromWorld.matrix() == two[i].cameraFromWorld.matrix()) << "frame " << i;
+    ASSERT_EQ(single[i].extrinsics.size(), two[i].extrinsics.size());
+    for (std::size_t k = 0; k < single[i].extrinsics.size(); ++k)
+      EXPECT_TRUE(single[i].extrinsics[k] == two[i].extrinsics[k]) << "frame " << i;
+  }
+  EXPECT_GT(tracked, static_cast<int>(single.size()) / 2);
+}
+
 // A rig that does not move: no parallax, so the monocular start cannot
 // succeed; the odometry must report no pose rather than invent motion.
 TEST(OdometryFlight, StillRigGivesNoPose) {

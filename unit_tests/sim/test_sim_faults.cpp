@@ -126,6 +126,14 @@ TEST(SimFaults, ShippedStressScenariosLoadAndFly) {
   EXPECT_DOUBLE_EQ(loadScenario((folder / "rate10.yaml").string()).flight.frameRate_hz, 10.0);
   EXPECT_DOUBLE_EQ(loadScenario((folder / "high150.yaml").string()).flight.altitude_m, 150.0);
   EXPECT_EQ(loadScenario((folder / "bad_frames.yaml").string()).faults.droppedFrames.size(), 5u);
+  const SimScenario gap = loadScenario((folder / "gap.yaml").string());
+  EXPECT_EQ(gap.faults.droppedFrames.size(), 90u);
+  EXPECT_EQ(gap.faults.blankFrames.size(), 90u);
+  EXPECT_EQ(loadScenario((folder / "strong_gusts.yaml").string()).flight.gusts.size(), 3u);
+  const SimScenario low = loadScenario((folder / "low30_10hz.yaml").string());
+  EXPECT_DOUBLE_EQ(low.flight.frameRate_hz, 10.0);
+  EXPECT_DOUBLE_EQ(low.flight.altitude_m, 30.0);
+  EXPECT_DOUBLE_EQ(loadScenario((folder / "high150_10hz.yaml").string()).flight.altitude_m, 150.0);
 }
 
 TEST(SimFaults, BadFaultsAreNamed) {

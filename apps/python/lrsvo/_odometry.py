@@ -69,7 +69,7 @@ def run(
     progress: the CLI's progress line on stderr.
     options: `lrsvo run`'s odometry options by name, with '_' for '-': constraint='gradient_projection',
         rigid=True, window=12, anchors=5, scale_drift=3e-4, extrinsic_rate=1.0, detector='orb', features=300,
-        band=8, min_depth=20, outlier_sigmas=..., solver='lm_schur_cholmod', seed=1, on_bad_frame='skip'
+        band=8, min_depth=20, outlier_sigmas=..., solver='lm_schur_dense', threads=2, seed=1, on_bad_frame='skip'
         (`lrsvo run --help` explains each). An unknown name or a bad value raises lrsvo.Error.
 
     The GIL is released while it runs. Ctrl-C (or SIGTERM) stops it after the current frame: the result,
