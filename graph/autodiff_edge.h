@@ -1,6 +1,5 @@
 #pragma once
 
-#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -27,9 +26,10 @@ namespace lrsvo {
 //
 // The dual numbers are lrsvo's Dual (graph/dual.h) with a fixed-size derivative
 // vector as long as the edge's whole tangent space (the sum of its vertices'
-// dimensions), so they live on the stack. Derived classes may still override
-// computeJacobians() with hand-written ones; computeAutoDiffJacobians() stays
-// available to check them.
+// dimensions), so they live on the stack. The duals' values are the residual:
+// a linearisation evaluates the residual once, in duals, not again in double.
+// Derived classes may still override computeJacobians() with hand-written
+// ones; computeAutoDiffJacobians() stays available to check them.
 template <typename Derived, int R, typename... Vs>
 class AutoDiffEdge : public BaseEdge<R, Vs...> {
   using Base = BaseEdge<R, Vs...>;
@@ -41,9 +41,14 @@ class AutoDiffEdge : public BaseEdge<R, Vs...> {
 
   void computeResidual(Residual& residual) const override;
   void computeJacobians() override;
+  // With the Jacobians by dual numbers, the residual is their values; with
+  // Jacobians a derived class writes, it is computeResidual()'s.
+  void computeResidualAndJacobians(Residual& residual) override;
 
   // Fills jacobian<K>() of every non-fixed vertex by dual numbers.
   void computeAutoDiffJacobians();
+  // The same, and the residual from the same evaluation.
+  void computeAutoDiffResidualAndJacobians(Residual& residual);
 
   // The same with another forward-mode type DualType: Dual<N> or Eigen's
   // AutoDiffScalar with N derivatives, N = kTangentDimension (the benchmark
@@ -54,6 +59,12 @@ class AutoDiffEdge : public BaseEdge<R, Vs...> {
   }
 
  private:
+  // The values of the last dual-number evaluation, and whether they belong to
+  // the linearisation under way (computeResidualAndJacobians clears the flag,
+  // then learns from it whether computeJacobians() ran the duals).
+  Residual dualValues_ = Residual::Zero();
+  bool dualValuesFresh_ = false;
+
   const Derived& derived() const { return static_cast<const Derived&>(*this); }
 
   // Offset of vertex K's block in the dual numbers' derivative vector.
@@ -95,8 +106,24 @@ void AutoDiffEdge<Derived, R, Vs...>::computeJacobians() {
 }
 
 template <typename Derived, int R, typename... Vs>
+void AutoDiffEdge<Derived, R, Vs...>::computeResidualAndJacobians(Residual& residual) {
+  dualValuesFresh_ = false;
+  this->computeJacobians();  // virtual: a derived class's own, or the duals
+  if (dualValuesFresh_)
+    residual = dualValues_;
+  else
+    computeResidual(residual);
+}
+
+template <typename Derived, int R, typename... Vs>
 void AutoDiffEdge<Derived, R, Vs...>::computeAutoDiffJacobians() {
   differentiate<Dual>(std::make_index_sequence<sizeof...(Vs)>{});
+}
+
+template <typename Derived, int R, typename... Vs>
+void AutoDiffEdge<Derived, R, Vs...>::computeAutoDiffResidualAndJacobians(Residual& residual) {
+  computeAutoDiffJacobians();
+  residual = dualValues_;
 }
 
 template <typename Derived, int R, typename... Vs>
@@ -122,11 +149,14 @@ auto AutoDiffEdge<Derived, R, Vs...>::seededDelta() -> DeltaOf<DualType, K> {
 template <typename Derived, int R, typename... Vs>
 template <typename DualType, std::size_t... K>
 void AutoDiffEdge<Derived, R, Vs...>::differentiate(std::index_sequence<K...>) {
-  const auto states =
-      std::make_tuple(this->template vertexAs<static_cast<int>(K)>()->perturbed(seededDelta<DualType, K>())...);
   Eigen::Matrix<DualType, R, 1> residual;
-  derived().residual(std::get<K>(states)..., residual);
+  // The perturbed states are temporaries bound to the residual's reference
+  // parameters: no copy of their derivative vectors.
+  derived().residual(this->template vertexAs<static_cast<int>(K)>()->perturbed(seededDelta<DualType, K>())...,
+                     residual);
   (copyJacobian<DualType, K>(residual), ...);
+  for (int row = 0; row < R; ++row) dualValues_[row] = residual[row].value();
+  dualValuesFresh_ = true;
 }
 
 template <typename Derived, int R, typename... Vs>

@@ -77,6 +77,13 @@ class BaseEdge : public Edge {
   // Fills jacobian<K>() = d r / d delta_K for every non-fixed vertex K.
   virtual void computeJacobians() { computeNumericJacobians(); }
 
+  // r and every Jacobian, as linearize() needs them: computeResidual(), then
+  // computeJacobians(). Edges that get both from one evaluation override it.
+  virtual void computeResidualAndJacobians(Residual& residual) {
+    computeResidual(residual);
+    computeJacobians();
+  }
+
   // Numeric differences through each vertex's oplus, on private copies of the
   // vertices (safe while other edges are evaluated), by numericDiffOptions().
   // The fallback, and the reference that tests check analytic Jacobians against.
@@ -102,8 +109,7 @@ class BaseEdge : public Edge {
   }
 
   double linearize() override {
-    computeResidual(whitenedResidual_);
-    computeJacobians();
+    computeResidualAndJacobians(whitenedResidual_);
     double weight = 1.0;
     whitenedResidual_ = whiten(whitenedResidual_);
     const double rho = robustify(whitenedResidual_.squaredNorm(), &weight);

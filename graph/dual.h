@@ -12,16 +12,21 @@ namespace lrsvo {
 // operation updates v in one fixed-size Eigen expression, evaluated at once,
 // so a chain of operations never rebuilds derivative expressions (docs/autodiff.md
 // compares it with Eigen's AutoDiffScalar). Constants are Duals with v = 0.
+//
+// Like a double, a default-initialised Dual (`Dual x;`, the elements of a new
+// Eigen matrix) leaves its derivatives unset until assigned: zeroing them would
+// cost as much as an operation, for every temporary of every expression.
+// Value-initialisation (`Dual()`, `T(0.0)`) is zero.
 template <int N>
 struct Dual {
   using Derivatives = Eigen::Matrix<double, N, 1>;
 
   double a = 0.0;
-  Derivatives v = Derivatives::Zero();
+  Derivatives v;
 
   Dual() = default;
   // Implicit, so constants mix with duals in a residual's expressions.
-  Dual(double value) : a(value) {}
+  Dual(double value) : a(value), v(Derivatives::Zero()) {}
   // Takes any Eigen expression of the derivatives and evaluates it into v directly.
   template <typename Expression>
   Dual(double value, const Eigen::MatrixBase<Expression>& derivatives) : a(value), v(derivatives) {}
@@ -51,9 +56,8 @@ struct Dual {
     return *this;
   }
   Dual& operator/=(const Dual& y) {
-    const double inverse = 1.0 / y.a;
-    a *= inverse;
-    v = (v - a * y.v) * inverse;
+    a /= y.a;
+    v = (v - a * y.v) * (1.0 / y.a);
     return *this;
   }
   Dual& operator+=(double s) {
@@ -69,7 +73,11 @@ struct Dual {
     v *= s;
     return *this;
   }
-  Dual& operator/=(double s) { return *this *= 1.0 / s; }
+  Dual& operator/=(double s) {
+    a /= s;
+    v *= 1.0 / s;
+    return *this;
+  }
 };
 
 template <int N>
@@ -120,24 +128,22 @@ Dual<N> operator*(double s, const Dual<N>& x) {
   return Dual<N>(s * x.a, s * x.v);
 }
 
-// (x / y)' = (x' - (x / y) y') / y
+// (x / y)' = (x' - (x / y) y') / y. Values are divided as in double, so a
+// residual's value is the same in duals as in double, bit for bit.
 template <int N>
 Dual<N> operator/(const Dual<N>& x, const Dual<N>& y) {
-  const double inverse = 1.0 / y.a;
-  const double quotient = x.a * inverse;
-  return Dual<N>(quotient, (x.v - quotient * y.v) * inverse);
+  const double quotient = x.a / y.a;
+  return Dual<N>(quotient, (x.v - quotient * y.v) * (1.0 / y.a));
 }
 template <int N>
 Dual<N> operator/(const Dual<N>& x, double s) {
-  const double inverse = 1.0 / s;
-  return Dual<N>(x.a * inverse, x.v * inverse);
+  return Dual<N>(x.a / s, x.v * (1.0 / s));
 }
 // (s / y)' = -(s / y) y' / y
 template <int N>
 Dual<N> operator/(double s, const Dual<N>& y) {
-  const double inverse = 1.0 / y.a;
-  const double quotient = s * inverse;
-  return Dual<N>(quotient, y.v * (-quotient * inverse));
+  const double quotient = s / y.a;
+  return Dual<N>(quotient, y.v * (-quotient / y.a));
 }
 
 // Comparisons look at the values only, as branches in a residual do.
@@ -161,6 +167,21 @@ LRSVO_DUAL_COMPARISON(>=)
 LRSVO_DUAL_COMPARISON(==)
 LRSVO_DUAL_COMPARISON(!=)
 #undef LRSVO_DUAL_COMPARISON
+
+// Whether T is a Dual: special functions written for any scalar take a shorter
+// path for duals.
+template <typename T>
+inline constexpr bool kIsDual = false;
+template <int N>
+inline constexpr bool kIsDual<Dual<N>> = true;
+
+// A function of x whose value f and derivative df = f'(x) are known in closed
+// form: the dual f + df x'. Special functions written for any scalar use it to
+// give duals their derivative in one step (vertices/so3.h).
+template <int N>
+Dual<N> chainRule(double f, double df, const Dual<N>& x) {
+  return Dual<N>(f, x.v * df);
+}
 
 // The elementary functions, each f(x) with derivative f'(x) x'. They are found
 // by argument-dependent lookup beside the std:: overloads for double.
@@ -219,8 +240,7 @@ Dual<N> atan2(double y, const Dual<N>& x) {
 }
 template <int N>
 Dual<N> pow(const Dual<N>& x, double p) {
-  const double power = std::pow(x.a, p - 1.0);
-  return Dual<N>(power * x.a, x.v * (p * power));
+  return Dual<N>(std::pow(x.a, p), x.v * (p * std::pow(x.a, p - 1.0)));
 }
 // |x|' = sign(x) x' (0 at x = 0: either one-sided derivative would be arbitrary).
 template <int N>

@@ -78,7 +78,7 @@ class VectorVertex : public BaseVertex<D> {
   const Estimate& state() const { return estimate_; }
   template <typename T>
   Eigen::Matrix<T, D, 1> perturbed(const Eigen::Matrix<T, D, 1>& delta) const {
-    return estimate_.template cast<T>() + delta;
+    return delta + estimate_;  // mixed: a dual plus a double costs no derivative work
   }
 
  protected:

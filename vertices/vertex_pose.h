@@ -43,7 +43,8 @@ class VertexPose : public BaseVertex<6> {
   template <typename T>
   RigidState<T> perturbed(const Eigen::Matrix<T, 6, 1>& delta) const {
     const Eigen::Matrix<T, 3, 3> dR = expSO3Of<T>(delta.template tail<3>());
-    return {dR * rotation_.cast<T>(), dR * translation_.cast<T>() + delta.template head<3>()};
+    // Mixed dual-double products: the estimate's numbers carry no derivatives to multiply.
+    return {dR * rotation_, dR * translation_ + delta.template head<3>()};
   }
 
   const char* typeTag() const override { return kTypeTag; }

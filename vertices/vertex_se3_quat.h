@@ -52,7 +52,7 @@ class VertexSE3Quat : public BaseVertex<6> {
   template <typename T>
   QuaternionPoseState<T> perturbed(const Eigen::Matrix<T, 6, 1>& delta) const {
     return {unitQuaternion_.cast<T>() * quaternionExp<T>(delta.template tail<3>()),
-            translation_.cast<T>() + delta.template head<3>()};
+            delta.template head<3>() + translation_};
   }
   const char* typeTag() const override { return kTypeTag; }
   std::unique_ptr<Vertex> clone() const override { return std::make_unique<VertexSE3Quat>(*this); }

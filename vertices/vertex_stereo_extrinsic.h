@@ -60,7 +60,7 @@ class VertexStereoExtrinsic : public VectorVertex<6> {
   ExtrinsicState<double> state() const { return {estimate_, rotation_}; }
   template <typename T>
   ExtrinsicState<T> perturbed(const Eigen::Matrix<T, 6, 1>& delta) const {
-    return ExtrinsicState<T>::fromParameters(estimate_.cast<T>() + delta);
+    return ExtrinsicState<T>::fromParameters(delta + estimate_);
   }
 
   const char* typeTag() const override { return kTypeTag; }

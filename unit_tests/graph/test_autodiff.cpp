@@ -239,6 +239,53 @@ TEST(AutoDiff, AnEdgeWithOnlyATemplatedResidualMatchesCentralDifferences) {
   }
 }
 
+// A linearisation of an edge with only a templated residual evaluates it once,
+// in dual numbers: their values are the residual. They come from the same
+// operations as the double path (Dual's value arithmetic is double's), so they
+// agree to the rounding of a differently ordered sum in an Eigen kernel, a few
+// units of 1.1e-16 |r|; 1e-14 |r| leaves a wide margin and catches any stale
+// or wrong value (of order |r| itself).
+TEST(AutoDiff, ALinearisationTakesTheResidualFromTheDualNumbers) {
+  std::mt19937_64 rng(26);
+  for (int trial = 0; trial < kTrials; ++trial) {
+    StereoState s(rng);
+    EdgeBearing edge;
+    edge.setVertex(0, &s.pose);
+    edge.setVertex(1, &s.point);
+    edge.setMeasurement(gaussian3(rng, 1.0).normalized());
+    EdgeBearing::Residual fromDuals;
+    EdgeBearing::Residual inDouble;
+    edge.computeResidualAndJacobians(fromDuals);
+    edge.computeResidual(inDouble);
+    EXPECT_LE((fromDuals - inDouble).cwiseAbs().maxCoeff(), 1e-14 * inDouble.norm()) << "trial " << trial;
+    const Eigen::Matrix<double, 3, 6> poseJacobian = edge.jacobian<0>();
+    edge.computeAutoDiffJacobians();
+    EXPECT_EQ(poseJacobian, edge.jacobian<0>()) << "trial " << trial;
+  }
+}
+
+// An edge with hand-written Jacobians keeps them in a linearisation, and its
+// residual is the double path's, never the values of an earlier dual-number
+// evaluation at another state.
+TEST(AutoDiff, ALinearisationUsesHandWrittenJacobiansAndTheCurrentResidual) {
+  std::mt19937_64 rng(27);
+  StereoState s(rng);
+  EdgeProjectBase edge(s.intrinsics);
+  edge.setVertex(0, &s.pose);
+  edge.setVertex(1, &s.point);
+  edge.setMeasurement(Eigen::Vector2d(600.0, 500.0));
+  edge.computeAutoDiffJacobians();
+  s.point.setEstimateVector(s.point.estimate() + Eigen::Vector3d(1.0, -2.0, 0.5));
+  EdgeProjectBase::Residual linearised;
+  EdgeProjectBase::Residual current;
+  edge.computeResidualAndJacobians(linearised);
+  edge.computeResidual(current);
+  EXPECT_EQ(linearised, current);
+  const Eigen::Matrix<double, 2, 6> poseJacobian = edge.jacobian<0>();
+  edge.computeJacobians();
+  EXPECT_EQ(poseJacobian, edge.jacobian<0>());
+}
+
 // The tests above must cover every least-squares edge type the library
 // registers. The bound barrier is a cost edge with an exact Hessian of its own,
 // not a residual.

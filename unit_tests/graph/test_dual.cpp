@@ -7,6 +7,7 @@
 // they must agree to 1e-14 relative (about 45 ulps).
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include <unsupported/Eigen/AutoDiff>
 
 #include "lrsvo/graph/dual.h"
+#include "lrsvo/vertices/so3.h"
 
 namespace lrsvo::test {
 namespace {
@@ -87,6 +89,49 @@ TEST(Dual, EigenMatricesOfDualsMultiplyWithDoubleMatrices) {
   }
   const Ours norm = v.norm();
   EXPECT_DOUBLE_EQ(norm.value(), std::sqrt(5.25));
+}
+
+// The rotation coefficients (vertices/so3.h) give duals closed-form
+// derivatives; AutoDiffScalar differentiates the same formulas operation by
+// operation. Above the Taylor switch both derivatives cancel: d a / d w is
+// (theta cos(theta) - sin(theta)) / theta^2 times w / theta, a difference of
+// terms of size theta computed to a few eps theta, so each is off by a few
+// eps / theta (2e-12 at the switch, theta = 1e-3). Values and the Taylor region
+// keep the 1e-14 of the other operations.
+template <typename T>
+Eigen::Matrix<T, 6, 1> rotationCoefficients(const Eigen::Matrix<T, 3, 1>& omega) {
+  T a, b;
+  rodriguesCoefficients(T(omega.squaredNorm()), a, b);
+  const Eigen::Quaternion<T> q = quaternionExp(omega);
+  Eigen::Matrix<T, 6, 1> out;
+  out << a, b, q.w(), q.x(), q.y(), q.z();
+  return out;
+}
+
+TEST(Dual, RotationCoefficientsHaveTheirDerivatives) {
+  std::mt19937_64 random(8);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+  for (const double theta : {0.0, 1e-5, 9e-4, 1.1e-3, 0.1, 1.0, 3.0}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      const Eigen::Vector3d omega =
+          theta * Eigen::Vector3d(normal(random), normal(random), normal(random)).normalized();
+      Eigen::Matrix<Ours, 3, 1> oursOmega;
+      Eigen::Matrix<Reference, 3, 1> referenceOmega;
+      for (int i = 0; i < 3; ++i) {
+        oursOmega[i] = Ours::variable(omega[i], i);
+        referenceOmega[i] = Reference(omega[i], kN, i);
+      }
+      const auto ours = rotationCoefficients(oursOmega);
+      const auto reference = rotationCoefficients(referenceOmega);
+      const double derivativeAgreement = kAgreement + (theta * theta >= 1e-6 ? 10.0 * kEpsilon / theta : 0.0);
+      for (int k = 0; k < ours.size(); ++k) {
+        EXPECT_NEAR(ours[k].value(), reference[k].value(), kAgreement) << "coefficient " << k << " theta " << theta;
+        EXPECT_LE((ours[k].derivatives() - reference[k].derivatives()).cwiseAbs().maxCoeff(), derivativeAgreement)
+            << "coefficient " << k << " theta " << theta;
+      }
+    }
+  }
 }
 
 TEST(Dual, ComparisonsReadTheValuesOnly) {
