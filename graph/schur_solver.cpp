@@ -1,6 +1,7 @@
 #include "lrsvo/graph/schur_solver.h"
 
-#include <map>
+#include <algorithm>
+#include <cstddef>
 #include <string>
 
 #include <Eigen/Cholesky>
@@ -59,15 +60,41 @@ bool SchurSolver::invertMarginal(const BlockSystem& system, int l) {
   const auto& blocks = system.blocks();
   Eigen::LLT<Square> llt(Eigen::Map<const Square>(system.values(blocks[system.diagonalBlock(v)]), dl, dl));
   if (llt.info() != Eigen::Success) return false;
-  Eigen::Map<Square> vInverse(vInverseValues_.data() + vInverseOffsets_[l], dl, dl);
-  vInverse = llt.solve(Square::Identity(dl, dl));
-  for (int k : marginalCouplings_[l]) {
-    const int di = system.dim(blocks[k].row);
-    using Coupling = Eigen::Matrix<double, Eigen::Dynamic, DL>;
-    Eigen::Map<Coupling>(yValues_.data() + yOffsets_[k], di, dl).noalias() =
-        Eigen::Map<const Coupling>(system.values(blocks[k]), di, dl) * vInverse;
-  }
+  Eigen::Map<Square>(vInverseValues_.data() + vInverseOffsets_[l], dl, dl) = llt.solve(Square::Identity(dl, dl));
   return true;
+}
+
+template <int DL>
+void SchurSolver::eliminatePoint(const BlockSystem& system, const Eigen::VectorXd& rhs, int l, int first, int last,
+                                 Eigen::VectorXd& reducedRhs, double* y) const {
+  using Coupling = Eigen::Matrix<double, Eigen::Dynamic, DL>;
+  const auto& blocks = system.blocks();
+  const auto& couplings = marginalCouplings_[l];
+  const auto rowBefore = [&](int coupling, int row) { return blocks[coupling].row < row; };
+  const auto begin = std::lower_bound(couplings.begin(), couplings.end(), first, rowBefore);
+  const auto end = std::lower_bound(begin, couplings.end(), last, rowBefore);
+  if (begin == end) return;
+  const int v = system.freeCount() + l, dl = system.dim(v);
+  const Eigen::Map<const Eigen::Matrix<double, DL, DL>> vInverse(vInverseValues_.data() + vInverseOffsets_[l], dl, dl);
+  const auto rl = rhs.segment(system.offset(v), dl);
+  for (auto a = begin; a != end; ++a) {
+    const int i = blocks[*a].row, di = system.dim(i);
+    Eigen::Map<Coupling> ym(y, di, dl);
+    ym.noalias() = Eigen::Map<const Coupling>(system.values(blocks[*a]), di, dl) * vInverse;
+    reducedRhs.segment(system.offset(i), di).noalias() -= ym * rl;
+    // The rows j of the couplings from a on ascend, as do row i's columns of
+    // S: each is found from the one before.
+    auto column = columns_.begin() + static_cast<std::ptrdiff_t>(rowStart_[i]);
+    const auto rowEnd = columns_.begin() + static_cast<std::ptrdiff_t>(rowStart_[i + 1]);
+    for (auto b = a; b != couplings.end(); ++b) {
+      const auto& w = blocks[*b];
+      const int dj = system.dim(w.row);
+      column = std::lower_bound(column, rowEnd, w.row);
+      const SymmetricBackend::BlockRef target = targets_[column - columns_.begin()];
+      const Kernel kernel = selectKernel<DL>(di, dj);
+      kernel(y, system.values(w), target.data, target.ld, di, dl, dj);
+    }
+  }
 }
 
 template <int DL>
@@ -92,19 +119,13 @@ void SchurSolver::analyze(const BlockSystem& system) {
   const int marginalCount = system.blockCount() - freeCount;
   const auto& blocks = system.blocks();
 
-  std::map<std::pair<int, int>, int> reduced;
-  auto reducedBlock = [&](int i, int j) {
-    return reduced.emplace(std::make_pair(i, j), static_cast<int>(reduced.size())).first->second;
-  };
-  for (int i = 0; i < freeCount; ++i) reducedBlock(i, i);
-
-  rowCopies_.assign(freeCount, {});
+  std::vector<std::vector<int>> rowCopyBlocks(freeCount);
   rowCouplings_.assign(freeCount, {});
   marginalCouplings_.assign(marginalCount, {});
   for (int k = 0; k < static_cast<int>(blocks.size()); ++k) {
     const auto& block = blocks[k];
     if (block.col < freeCount) {
-      rowCopies_[block.row].push_back({k, reducedBlock(block.row, block.col)});
+      rowCopyBlocks[block.row].push_back(k);
     } else if (block.row < freeCount) {
       rowCouplings_[block.row].push_back(k);
       marginalCouplings_[block.col - freeCount].push_back(k);
@@ -114,32 +135,47 @@ void SchurSolver::analyze(const BlockSystem& system) {
                   std::to_string(system.vertex(block.col)->id()) + "; use a full solver");
     }
   }
+  const auto byRow = [&](int a, int b) { return blocks[a].row < blocks[b].row; };
+  for (auto& couplings : marginalCouplings_) std::sort(couplings.begin(), couplings.end(), byRow);
 
-  rowUpdates_.assign(freeCount, {});
-  for (int l = 0; l < marginalCount; ++l) {
-    const int dl = system.dim(freeCount + l);
-    for (int a : marginalCouplings_[l]) {
-      for (int b : marginalCouplings_[l]) {
-        const int i = blocks[a].row, j = blocks[b].row;
-        if (i > j) continue;
-        const Kernel kernel = dl == 3 ? selectKernel<3>(system.dim(i), system.dim(j))
-                                      : selectKernel<Eigen::Dynamic>(system.dim(i), system.dim(j));
-        rowUpdates_[i].push_back({a, b, reducedBlock(i, j), kernel});
+  // The pattern of S, row by row: the diagonal, H's free-free blocks, and
+  // (i, j) for every pair of rows i <= j coupled to one marginalised vertex.
+  rowStart_.assign(1, 0);
+  columns_.clear();
+  rowWork_.assign(freeCount, 0.0);
+  std::vector<int> seenInRow(freeCount, -1);
+  std::vector<int> row;
+  for (int i = 0; i < freeCount; ++i) {
+    row.assign(1, i);
+    seenInRow[i] = i;
+    const auto add = [&](int j) {
+      if (seenInRow[j] != i) {
+        seenInRow[j] = i;
+        row.push_back(j);
+      }
+    };
+    for (int k : rowCopyBlocks[i]) add(blocks[k].col);
+    for (int k : rowCouplings_[i]) {
+      const auto& couplings = marginalCouplings_[blocks[k].col - freeCount];
+      for (auto c = std::lower_bound(couplings.begin(), couplings.end(), k, byRow); c != couplings.end(); ++c) {
+        add(blocks[*c].row);
+        rowWork_[i] += 1.0;
       }
     }
+    std::sort(row.begin(), row.end());
+    columns_.insert(columns_.end(), row.begin(), row.end());
+    rowStart_.push_back(columns_.size());
+    rowWork_[i] += static_cast<double>(rowCopyBlocks[i].size() + rowCouplings_[i].size());
   }
-  rowWork_.assign(freeCount, 0.0);
+  rowCopies_.assign(freeCount, {});
   for (int i = 0; i < freeCount; ++i)
-    rowWork_[i] = static_cast<double>(rowUpdates_[i].size() + rowCopies_[i].size() + rowCouplings_[i].size());
+    for (int k : rowCopyBlocks[i]) rowCopies_[i].push_back({k, reducedBlock(i, blocks[k].col)});
 
-  yOffsets_.assign(blocks.size(), 0);
-  std::size_t ySize = 0;
-  for (const auto& couplings : marginalCouplings_)
-    for (int k : couplings) {
-      yOffsets_[k] = ySize;
-      ySize += static_cast<std::size_t>(system.dim(blocks[k].row)) * system.dim(blocks[k].col);
-    }
-  yValues_.assign(ySize, 0.0);
+  maxCouplingSize_ = 0;
+  for (const auto& block : blocks)
+    if (block.row < freeCount && block.col >= freeCount)
+      maxCouplingSize_ =
+          std::max(maxCouplingSize_, static_cast<std::size_t>(system.dim(block.row)) * system.dim(block.col));
   vInverseOffsets_.assign(marginalCount, 0);
   std::size_t vSize = 0;
   for (int l = 0; l < marginalCount; ++l) {
@@ -150,34 +186,45 @@ void SchurSolver::analyze(const BlockSystem& system) {
 
   std::vector<int> dims(freeCount);
   for (int i = 0; i < freeCount; ++i) dims[i] = system.dim(i);
-  std::vector<std::pair<int, int>> pairs(reduced.size());
-  for (const auto& [key, index] : reduced) pairs[index] = key;
+  std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(columns_.size());
+  for (int i = 0; i < freeCount; ++i)
+    for (std::size_t p = rowStart_[i]; p < rowStart_[i + 1]; ++p) pairs.emplace_back(i, columns_[p]);
   reducedBlockCount_ = static_cast<int>(pairs.size());
   // With every active vertex marginalised there is no reduced system to factorise.
-  if (freeCount > 0) backend_->analyze(dims, pairs);
+  targets_.clear();
+  if (freeCount == 0) return;
+  backend_->analyze(dims, pairs);
+  for (int k = 0; k < reducedBlockCount_; ++k) targets_.push_back(backend_->block(k));
 }
 
-void SchurSolver::reduceRow(const BlockSystem& system, const Eigen::VectorXd& rhs, int i, Eigen::VectorXd& reducedRhs) {
+int SchurSolver::reducedBlock(int i, int j) const {
+  const auto begin = columns_.begin() + static_cast<std::ptrdiff_t>(rowStart_[i]);
+  const auto end = columns_.begin() + static_cast<std::ptrdiff_t>(rowStart_[i + 1]);
+  return static_cast<int>(std::lower_bound(begin, end, j) - columns_.begin());
+}
+
+void SchurSolver::copyFreeBlocks(const BlockSystem& system, int i) {
   const auto& blocks = system.blocks();
   const int di = system.dim(i);
   for (const Copy& copy : rowCopies_[i]) {
-    const auto target = backend_->block(copy.target);
+    const auto target = targets_[copy.target];
     const auto& source = blocks[copy.source];
     const int dj = system.dim(source.col);
     Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>(target.data, di, dj, Eigen::OuterStride<>(target.ld)) +=
         Eigen::Map<const Eigen::MatrixXd>(system.values(source), di, dj);
   }
-  for (const Update& update : rowUpdates_[i]) {
-    const auto target = backend_->block(update.target);
-    const auto& w = blocks[update.w];
-    update.kernel(yValues_.data() + yOffsets_[update.y], system.values(w), target.data, target.ld, di,
-                  system.dim(w.col), system.dim(w.row));
-  }
-  auto ri = reducedRhs.segment(system.offset(i), di);
-  for (int k : rowCouplings_[i]) {
-    const int l = blocks[k].col, dl = system.dim(l);
-    ri.noalias() -=
-        Eigen::Map<const Eigen::MatrixXd>(yValues_.data() + yOffsets_[k], di, dl) * rhs.segment(system.offset(l), dl);
+}
+
+void SchurSolver::eliminate(const BlockSystem& system, const Eigen::VectorXd& rhs, int first, int last,
+                            Eigen::VectorXd& reducedRhs) const {
+  const int freeCount = system.freeCount();
+  std::vector<double> y(maxCouplingSize_);
+  for (int l = 0; l < static_cast<int>(marginalCouplings_.size()); ++l) {
+    if (system.dim(freeCount + l) == 3)
+      eliminatePoint<3>(system, rhs, l, first, last, reducedRhs, y.data());
+    else
+      eliminatePoint<Eigen::Dynamic>(system, rhs, l, first, last, reducedRhs, y.data());
   }
 }
 
@@ -186,7 +233,7 @@ bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, E
   const int freeCount = system.freeCount();
   const int marginalCount = system.blockCount() - freeCount;
 
-  // V^-1 per marginalised vertex and Y = W V^-1 per coupling.
+  // V^-1 per marginalised vertex.
   std::vector<char> positive(marginalCount, 1);
   parallelFor(0, marginalCount, threads, [&](int l) {
     positive[l] =
@@ -198,13 +245,15 @@ bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, E
   // Reduced system, by rows of blocks. Row i holds the updates of every j >= i,
   // so the rows' costs fall along S: each task takes a contiguous range of
   // rows of about equal work (a few per thread, handed out as threads come
-  // free). Contiguous, so that two threads seldom write neighbouring blocks of
-  // one column of S, which share cache lines.
+  // free; one range on one thread). Contiguous, so that two threads seldom
+  // write neighbouring blocks of one column of S, which share cache lines.
+  // Within a range the points are eliminated one by one.
   if (freeCount > 0) backend_->setZero();
   Eigen::VectorXd reducedRhs = rhs.head(system.freeScalarCount());
-  const std::vector<int> ranges = balancedRanges(rowWork_, 4 * threads);
+  const std::vector<int> ranges = balancedRanges(rowWork_, threads);
   parallelFor(0, static_cast<int>(ranges.size()) - 1, threads, 1, [&](int range) {
-    for (int i = ranges[range]; i < ranges[range + 1]; ++i) reduceRow(system, rhs, i, reducedRhs);
+    for (int i = ranges[range]; i < ranges[range + 1]; ++i) copyFreeBlocks(system, i);
+    eliminate(system, rhs, ranges[range], ranges[range + 1], reducedRhs);
   });
   const double reduceSeconds = phase.lap();
 

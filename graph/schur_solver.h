@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <vector>
 
@@ -32,22 +33,29 @@ class SchurSolver : public LinearSolver {
 
  private:
   using Kernel = void (*)(const double* y, const double* w, double* s, int ld, int di, int dl, int dj);
-  struct Update {  // S[target] -= Y(i,l) W(j,l)^T
-    int y;         // system block (i, l); Y is kept in the same slot
-    int w;         // system block (j, l)
-    int target;    // backend block (i, j)
-    Kernel kernel;
-  };
   struct Copy {  // S[target] += H[source] for free-free blocks
     int source;
     int target;
   };
 
-  // V^-1 and Y = W V^-1 for marginalised vertex l; false if V is not positive definite.
+  // V^-1 for marginalised vertex l; false if V is not positive definite.
   template <int DL>
   bool invertMarginal(const BlockSystem& system, int l);
-  // Row i of S and of the reduced right-hand side.
-  void reduceRow(const BlockSystem& system, const Eigen::VectorXd& rhs, int i, Eigen::VectorXd& reducedRhs);
+  // Row i of S before the eliminations: its free-free blocks of H.
+  void copyFreeBlocks(const BlockSystem& system, int i);
+  // Eliminates every marginalised vertex from the rows [first, last) of S and
+  // of the reduced right-hand side, point by point: S(i, j) -= Y_il W_jl^T
+  // and r_i -= Y_il r_l with Y_il = W_il V_l^-1, formed when needed. A point's
+  // blocks stay in cache for all its pairs, and each block of S takes its
+  // updates in the order of l, whatever the split into rows (so the result
+  // does not depend on the thread count).
+  void eliminate(const BlockSystem& system, const Eigen::VectorXd& rhs, int first, int last,
+                 Eigen::VectorXd& reducedRhs) const;
+  template <int DL>
+  void eliminatePoint(const BlockSystem& system, const Eigen::VectorXd& rhs, int l, int first, int last,
+                      Eigen::VectorXd& reducedRhs, double* y) const;
+  // Backend block index of S(i, j), a block of the pattern.
+  int reducedBlock(int i, int j) const;
   // x_l = V^-1 (r_l - sum_i W_il^T x_i).
   template <int DL>
   void backSubstitute(const BlockSystem& system, const Eigen::VectorXd& rhs, const Eigen::VectorXd& xFree, int l,
@@ -55,14 +63,18 @@ class SchurSolver : public LinearSolver {
 
   std::unique_ptr<SymmetricBackend> backend_;
   int reducedBlockCount_ = 0;
-  std::vector<std::vector<Update>> rowUpdates_;
+  // The pattern of S by rows: row i's block columns (ascending) are
+  // columns_[rowStart_[i], rowStart_[i + 1]), and the position there is the
+  // backend's block index.
+  std::vector<std::size_t> rowStart_;
+  std::vector<int> columns_;
+  std::vector<SymmetricBackend::BlockRef> targets_;  // per backend block, fixed by its analyze()
   std::vector<std::vector<Copy>> rowCopies_;
   std::vector<std::vector<int>> rowCouplings_;       // per free row i: system blocks (i, l)
   std::vector<std::vector<int>> marginalCouplings_;  // per marginalised l: system blocks (i, l)
-  std::vector<double> rowWork_;                      // per free row i: its blocks' count, the cost of reduceRow
-  std::vector<std::size_t> yOffsets_;                // per system block: offset of Y, if a coupling
-  std::vector<double> yValues_;
-  std::vector<std::size_t> vInverseOffsets_;  // per marginalised vertex
+  std::vector<double> rowWork_;                      // per free row i: its updates and blocks, its share of the work
+  std::size_t maxCouplingSize_ = 0;                  // the largest W_il's entry count
+  std::vector<std::size_t> vInverseOffsets_;         // per marginalised vertex
   std::vector<double> vInverseValues_;
 };
 

@@ -190,6 +190,35 @@ TEST(LinearSolvers, SameStepOnBalCameras) {
   expectSolversMatchDenseReference(makeBalToyProblem(options), 1e-2);
 }
 
+// The Schur solvers split the rows of S among threads, and every block of S
+// takes its updates in the same order whatever the split: the step is the
+// same, bit for bit, for any thread count.
+TEST(LinearSolvers, SchurStepIsTheSameForAnyThreadCount) {
+  ToyOptions options;
+  options.poses = 12;
+  options.points = 80;
+  options.sharedScale = true;
+  options.randomInformation = true;
+  const Graph graph = makeToyProblem(options);
+  BlockSystem system(graph, /*schurOrdering=*/true);
+  system.fill(1);
+  system.setDiagonalShift(1e-3 * system.diagonal());
+  const Eigen::VectorXd rhs = -system.gradient();
+  for (const char* name : {"schur_dense", "schur_cholmod"}) {
+    Eigen::VectorXd oneThread;
+    for (int threads : {1, 2, 3, 5}) {
+      std::unique_ptr<LinearSolver> solver = Registry<LinearSolver>::instance().create(name);
+      solver->analyze(system);
+      Eigen::VectorXd x;
+      ASSERT_TRUE(solver->solve(system, rhs, x, threads)) << name;
+      if (threads == 1)
+        oneThread = x;
+      else
+        EXPECT_EQ(x, oneThread) << name << ", " << threads << " threads";
+    }
+  }
+}
+
 // A vertex shared by every pose makes the reduced system an arrowhead: a
 // block per pair of co-visible poses, one per pose with the shared vertex,
 // and nothing between poses that see no common point.
