@@ -219,6 +219,13 @@ class EdgeBearing : public AutoDiffEdge<EdgeBearing, 3, VertexPose, VertexPoint3
   }
 };
 
+// Joins the bearing edge to the state's pose and point, with a random unit measurement.
+void connectBearing(EdgeBearing& edge, StereoState& s, std::mt19937_64& rng) {
+  edge.setVertex(0, &s.pose);
+  edge.setVertex(1, &s.point);
+  edge.setMeasurement(gaussian3(rng, 1.0).normalized());
+}
+
 // Central differences with step h = 1e-6 err by h^2 |r'''| / 6 + eps |r| / h:
 // with |r'''| of order 1 / |ray|^3 and |r| <= 2 here, about 1e-10 and the
 // columns' own rounding; 1e-7 is far above both and far below any wrong entry.
@@ -227,9 +234,7 @@ TEST(AutoDiff, AnEdgeWithOnlyATemplatedResidualMatchesCentralDifferences) {
   for (int trial = 0; trial < kTrials; ++trial) {
     StereoState s(rng);
     EdgeBearing edge;
-    edge.setVertex(0, &s.pose);
-    edge.setVertex(1, &s.point);
-    edge.setMeasurement(gaussian3(rng, 1.0).normalized());
+    connectBearing(edge, s, rng);
     edge.computeJacobians();
     const Eigen::Matrix<double, 3, 6> autodiffPose = edge.jacobian<0>();
     const Eigen::Matrix<double, 3, 3> autodiffPoint = edge.jacobian<1>();
@@ -250,9 +255,7 @@ TEST(AutoDiff, ALinearisationTakesTheResidualFromTheDualNumbers) {
   for (int trial = 0; trial < kTrials; ++trial) {
     StereoState s(rng);
     EdgeBearing edge;
-    edge.setVertex(0, &s.pose);
-    edge.setVertex(1, &s.point);
-    edge.setMeasurement(gaussian3(rng, 1.0).normalized());
+    connectBearing(edge, s, rng);
     EdgeBearing::Residual fromDuals;
     EdgeBearing::Residual inDouble;
     edge.computeResidualAndJacobians(fromDuals);
