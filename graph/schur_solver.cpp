@@ -120,14 +120,14 @@ void SchurSolver::analyze(const BlockSystem& system) {
   const auto& blocks = system.blocks();
 
   std::vector<std::vector<int>> rowCopyBlocks(freeCount);
-  rowCouplings_.assign(freeCount, {});
+  std::vector<std::vector<int>> rowCouplings(freeCount);  // per free row i: system blocks (i, l)
   marginalCouplings_.assign(marginalCount, {});
   for (int k = 0; k < static_cast<int>(blocks.size()); ++k) {
     const auto& block = blocks[k];
     if (block.col < freeCount) {
       rowCopyBlocks[block.row].push_back(k);
     } else if (block.row < freeCount) {
-      rowCouplings_[block.row].push_back(k);
+      rowCouplings[block.row].push_back(k);
       marginalCouplings_[block.col - freeCount].push_back(k);
     } else if (block.row != block.col) {
       throw Error("Schur solver: an edge joins marginalised vertices " +
@@ -155,7 +155,7 @@ void SchurSolver::analyze(const BlockSystem& system) {
       }
     };
     for (int k : rowCopyBlocks[i]) add(blocks[k].col);
-    for (int k : rowCouplings_[i]) {
+    for (int k : rowCouplings[i]) {
       const auto& couplings = marginalCouplings_[blocks[k].col - freeCount];
       for (auto c = std::lower_bound(couplings.begin(), couplings.end(), k, byRow); c != couplings.end(); ++c) {
         add(blocks[*c].row);
@@ -165,7 +165,7 @@ void SchurSolver::analyze(const BlockSystem& system) {
     std::sort(row.begin(), row.end());
     columns_.insert(columns_.end(), row.begin(), row.end());
     rowStart_.push_back(columns_.size());
-    rowWork_[i] += static_cast<double>(rowCopyBlocks[i].size() + rowCouplings_[i].size());
+    rowWork_[i] += static_cast<double>(rowCopyBlocks[i].size() + rowCouplings[i].size());
   }
   rowCopies_.assign(freeCount, {});
   for (int i = 0; i < freeCount; ++i)

@@ -70,7 +70,6 @@ class SchurSolver : public LinearSolver {
   std::vector<int> columns_;
   std::vector<SymmetricBackend::BlockRef> targets_;  // per backend block, fixed by its analyze()
   std::vector<std::vector<Copy>> rowCopies_;
-  std::vector<std::vector<int>> rowCouplings_;       // per free row i: system blocks (i, l)
   std::vector<std::vector<int>> marginalCouplings_;  // per marginalised l: system blocks (i, l)
   std::vector<double> rowWork_;                      // per free row i: its updates and blocks, its share of the work
   std::size_t maxCouplingSize_ = 0;                  // the largest W_il's entry count
