@@ -54,7 +54,6 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
   offDiagonalIds.reserve(graph.edges().size() * 2);
   for (int i = 0; i < blockCount(); ++i) blocks_.push_back(Block{i, i, 0});
   blockContributions_.resize(blocks_.size());
-  gradientContributions_.resize(blockCount());
   std::vector<int> edgeBlocks;  // block index of each of an edge's vertices, -1 if inactive
   for (const auto& edgePtr : graph.edges()) {
     Edge* edge = edgePtr.get();
@@ -67,7 +66,6 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
     for (int a = 0; a < edge->vertexCount(); ++a) {
       const int row = edgeBlocks[static_cast<std::size_t>(a)];
       if (row < 0) continue;
-      gradientContributions_[row].push_back({edge, a, a});
       for (int b = 0; b < edge->vertexCount(); ++b) {
         const int col = edgeBlocks[static_cast<std::size_t>(b)];
         if (col < 0 || row > col) continue;
@@ -117,24 +115,36 @@ double BlockSystem::fill(int threads) {
   std::vector<double> costs(edgeCount);
   parallelFor(0, edgeCount, threads, [&](int e) { costs[e] = edges_[e]->linearize(); });
 
-  parallelFor(0, static_cast<int>(blocks_.size()), threads, [&](int k) {
-    const Block& block = blocks_[k];
-    double* target = values(block);
-    const int rows = dims_[block.row];
-    std::fill(target, target + rows * dims_[block.col], 0.0);
-    for (const Contribution& c : blockContributions_[k]) c.edge->addHessianBlock(c.a, c.b, target, rows);
-  });
-  parallelFor(0, blockCount(), threads, [&](int i) {
-    double* g = gradient_.data() + offsets_[i];
-    std::fill(g, g + dims_[i], 0.0);
-    for (const Contribution& c : gradientContributions_[i]) c.edge->addGradient(c.a, g);
-    const double* diag = values(blocks_[diagonalBlock(i)]);
-    for (int d = 0; d < dims_[i]; ++d) diagonal_[offsets_[i] + d] = diag[d * dims_[i] + d];
+  // Column by column: the blocks of one column share their edges (a point's
+  // W blocks and its V block), so each edge is read from memory once per
+  // column and found in cache for the column's other blocks.
+  parallelFor(0, blockCount(), threads, [&](int column) {
+    for (int k : colBlocks_[column]) fillBlock(k);
   });
 
   double total = 0.0;
   for (double c : costs) total += c;
   return total;
+}
+
+void BlockSystem::fillBlock(int k) {
+  const Block& block = blocks_[k];
+  double* target = values(block);
+  const int rows = dims_[block.row];
+  std::fill(target, target + rows * dims_[block.col], 0.0);
+  if (k >= blockCount()) {
+    for (const Contribution& c : blockContributions_[k]) c.edge->addHessianBlock(c.a, c.b, target, rows);
+    return;
+  }
+  // Diagonal block k: the edges on vertex k, which also make its gradient,
+  // taken while each edge is in cache.
+  double* g = gradient_.data() + offsets_[k];
+  std::fill(g, g + rows, 0.0);
+  for (const Contribution& c : blockContributions_[k]) {
+    c.edge->addHessianBlock(c.a, c.a, target, rows);
+    c.edge->addGradient(c.a, g);
+  }
+  for (int d = 0; d < rows; ++d) diagonal_[offsets_[k] + d] = target[d * rows + d];
 }
 
 double BlockSystem::cost(int threads) const {

@@ -74,6 +74,9 @@ class BlockSystem {
     int b;  // the edge's local index of the column vertex
   };
 
+  // Sums block k of H from its edges; a diagonal block also its gradient and diagonal.
+  void fillBlock(int k);
+
   std::vector<Edge*> edges_;
   std::vector<Vertex*> vertices_;
   std::unordered_map<const Vertex*, int> blockIndex_;
@@ -83,7 +86,6 @@ class BlockSystem {
   std::vector<Block> blocks_;
   std::vector<std::vector<int>> rowBlocks_, colBlocks_;
   std::vector<std::vector<Contribution>> blockContributions_;
-  std::vector<std::vector<Contribution>> gradientContributions_;  // b unused
   std::vector<double> values_;
   Eigen::VectorXd gradient_, diagonal_;
   std::vector<double> savedEstimates_;
