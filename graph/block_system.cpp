@@ -30,6 +30,17 @@ std::vector<Vertex*> orderVertices(const Graph& graph, bool schurOrdering, int* 
   return free;
 }
 
+// items sorted by key(item) in [0, keyCount), items of one key in their order.
+template <typename Items, typename Key>
+Items stableCountingSort(const Items& items, int keyCount, const Key& key) {
+  std::vector<std::size_t> start(static_cast<std::size_t>(keyCount) + 1, 0);
+  for (const auto& item : items) ++start[static_cast<std::size_t>(key(item)) + 1];
+  for (std::size_t k = 0; k < static_cast<std::size_t>(keyCount); ++k) start[k + 1] += start[k];
+  Items sorted(items.size());
+  for (const auto& item : items) sorted[start[static_cast<std::size_t>(key(item))]++] = item;
+  return sorted;
+}
+
 }  // namespace
 
 BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
@@ -47,13 +58,13 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
     scalarCount_ += dims_.back();
   }
 
-  // Block ids: the diagonal of vertex i is block i, the others follow in the
-  // order edges first join their two vertices.
-  const auto count = static_cast<std::int64_t>(blockCount());
-  std::unordered_map<std::int64_t, int> offDiagonalIds;
-  offDiagonalIds.reserve(graph.edges().size() * 2);
-  for (int i = 0; i < blockCount(); ++i) blocks_.push_back(Block{i, i, 0});
-  blockContributions_.resize(blocks_.size());
+  // Every pair (row <= col) of an edge's active vertices, in edge order.
+  struct Entry {
+    int row;
+    int col;
+    Contribution contribution;
+  };
+  LargeArray<Entry> entries;
   std::vector<int> edgeBlocks;  // block index of each of an edge's vertices, -1 if inactive
   for (const auto& edgePtr : graph.edges()) {
     Edge* edge = edgePtr.get();
@@ -72,33 +83,54 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
         if (row == col && a != b)
           throw Error(std::string("edge ") + edge->typeTag() + " names vertex " +
                       std::to_string(edge->vertex(a)->id()) + " twice");
-        int id = row;
-        if (row != col) {
-          const auto [it, inserted] = offDiagonalIds.try_emplace(row * count + col, static_cast<int>(blocks_.size()));
-          if (inserted) {
-            blocks_.push_back(Block{row, col, 0});
-            blockContributions_.emplace_back();
-          }
-          id = it->second;
-        }
-        blockContributions_[static_cast<std::size_t>(id)].push_back({edge, a, b});
+        entries.push_back({row, col, {edge, a, b}});
       }
     }
   }
+  // Grouped by pair, row by row and column by column, each pair's edges in
+  // edge order (the order H's blocks sum them in).
+  entries = stableCountingSort(entries, blockCount(), [](const Entry& e) { return e.col; });
+  entries = stableCountingSort(entries, blockCount(), [](const Entry& e) { return e.row; });
 
-  // Values laid out by row, then column.
-  rowBlocks_.resize(blockCount());
-  colBlocks_.resize(blockCount());
-  for (int id = 0; id < static_cast<int>(blocks_.size()); ++id) rowBlocks_[blocks_[id].row].push_back(id);
-  std::size_t size = 0;
-  for (std::vector<int>& row : rowBlocks_) {
-    std::sort(row.begin(), row.end(), [&](int x, int y) { return blocks_[x].col < blocks_[y].col; });
-    for (int id : row) {
-      Block& block = blocks_[id];
-      block.offset = size;
-      size += static_cast<std::size_t>(dims_[block.row]) * dims_[block.col];
-      colBlocks_[block.col].push_back(id);  // rows visited in order: each column comes out sorted by row
+  // Block ids: the diagonal of vertex i is block i, the others follow in
+  // that order. rowBlockIds_ lists every block in that order.
+  for (int i = 0; i < blockCount(); ++i) blocks_.push_back(Block{i, i, 0});
+  LargeArray<int> entryBlock(entries.size());
+  rowStart_.assign(blockCount() + 1, 0);
+  colStart_.assign(blockCount() + 1, 0);
+  for (std::size_t e = 0; e < entries.size(); ++e) {
+    const Entry& entry = entries[e];
+    const bool newPair = e == 0 || entry.row != entries[e - 1].row || entry.col != entries[e - 1].col;
+    if (newPair && entry.row != entry.col) blocks_.push_back(Block{entry.row, entry.col, 0});
+    entryBlock[e] = entry.row == entry.col ? entry.row : static_cast<int>(blocks_.size()) - 1;
+    if (newPair) {
+      rowBlockIds_.push_back(entryBlock[e]);
+      ++rowStart_[entry.row + 1];
+      ++colStart_[entry.col + 1];
     }
+  }
+  for (int i = 0; i < blockCount(); ++i) {
+    rowStart_[i + 1] += rowStart_[i];
+    colStart_[i + 1] += colStart_[i];
+  }
+
+  contributionStart_.assign(blocks_.size() + 1, 0);
+  for (int id : entryBlock) ++contributionStart_[static_cast<std::size_t>(id) + 1];
+  for (std::size_t k = 0; k < blocks_.size(); ++k) contributionStart_[k + 1] += contributionStart_[k];
+  contributions_.resize(entries.size());
+  std::vector<std::size_t> next(contributionStart_.begin(), contributionStart_.end() - 1);
+  for (std::size_t e = 0; e < entries.size(); ++e)
+    contributions_[next[static_cast<std::size_t>(entryBlock[e])]++] = entries[e].contribution;
+
+  // Values laid out by row, then column; each column's blocks listed by row.
+  colBlockIds_.resize(rowBlockIds_.size());
+  std::vector<std::size_t> nextInColumn(colStart_.begin(), colStart_.end() - 1);
+  std::size_t size = 0;
+  for (int id : rowBlockIds_) {
+    Block& block = blocks_[static_cast<std::size_t>(id)];
+    block.offset = size;
+    size += static_cast<std::size_t>(dims_[block.row]) * dims_[block.col];
+    colBlockIds_[nextInColumn[static_cast<std::size_t>(block.col)]++] = id;
   }
   values_.assign(size, 0.0);
   gradient_ = Eigen::VectorXd::Zero(scalarCount_);
@@ -119,7 +151,7 @@ double BlockSystem::fill(int threads) {
   // W blocks and its V block), so each edge is read from memory once per
   // column and found in cache for the column's other blocks.
   parallelFor(0, blockCount(), threads, [&](int column) {
-    for (int k : colBlocks_[column]) fillBlock(k);
+    for (int k : colBlocks(column)) fillBlock(k);
   });
 
   double total = 0.0;
@@ -132,15 +164,16 @@ void BlockSystem::fillBlock(int k) {
   double* target = values(block);
   const int rows = dims_[block.row];
   std::fill(target, target + rows * dims_[block.col], 0.0);
+  const std::span<const Contribution> edges = slice(contributions_, contributionStart_, k);
   if (k >= blockCount()) {
-    for (const Contribution& c : blockContributions_[k]) c.edge->addHessianBlock(c.a, c.b, target, rows);
+    for (const Contribution& c : edges) c.edge->addHessianBlock(c.a, c.b, target, rows);
     return;
   }
   // Diagonal block k: the edges on vertex k, which also make its gradient,
   // taken while each edge is in cache.
   double* g = gradient_.data() + offsets_[k];
   std::fill(g, g + rows, 0.0);
-  for (const Contribution& c : blockContributions_[k]) {
+  for (const Contribution& c : edges) {
     c.edge->addHessianBlock(c.a, c.a, target, rows);
     c.edge->addGradient(c.a, g);
   }
@@ -165,11 +198,11 @@ void BlockSystem::setDiagonalShift(const Eigen::VectorXd& shift) {
 
 void BlockSystem::holdCoordinate(int block, int coordinate) {
   const int d = dims_[block];
-  for (int k : rowBlocks_[block]) {
+  for (int k : rowBlocks(block)) {
     const int cols = dims_[blocks_[k].col];
     for (int c = 0; c < cols; ++c) values(blocks_[k])[c * d + coordinate] = 0.0;
   }
-  for (int k : colBlocks_[block]) {
+  for (int k : colBlocks(block)) {
     const int rows = dims_[blocks_[k].row];
     std::fill_n(values(blocks_[k]) + coordinate * rows, rows, 0.0);
   }

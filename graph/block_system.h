@@ -1,12 +1,14 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "lrsvo/graph/graph.h"
+#include "lrsvo/graph/large_array.h"
 
 namespace lrsvo {
 
@@ -35,12 +37,14 @@ class BlockSystem {
   // Block index of a vertex, or -1 when it is fixed or on no edge.
   int blockOf(const Vertex* vertex) const;
 
+  // The diagonal block of vertex i is block i; the others follow row by row,
+  // each row's by column.
   const std::vector<Block>& blocks() const { return blocks_; }
   // Blocks of row r (columns >= r), sorted by column; the first is the diagonal.
-  const std::vector<int>& rowBlocks(int row) const { return rowBlocks_[row]; }
+  std::span<const int> rowBlocks(int row) const { return slice(rowBlockIds_, rowStart_, row); }
   // Blocks of column c (rows <= c), sorted by row; the last is the diagonal.
-  const std::vector<int>& colBlocks(int col) const { return colBlocks_[col]; }
-  int diagonalBlock(int block) const { return rowBlocks_[block].front(); }
+  std::span<const int> colBlocks(int col) const { return slice(colBlockIds_, colStart_, col); }
+  int diagonalBlock(int block) const { return block; }
   double* values(const Block& block) { return values_.data() + block.offset; }
   const double* values(const Block& block) const { return values_.data() + block.offset; }
 
@@ -76,6 +80,12 @@ class BlockSystem {
 
   // Sums block k of H from its edges; a diagonal block also its gradient and diagonal.
   void fillBlock(int k);
+  // Entries [start[i], start[i + 1]) of a list stored by rows (CSR).
+  template <typename Items>
+  static std::span<const typename Items::value_type> slice(const Items& items, const std::vector<std::size_t>& start,
+                                                           int i) {
+    return {items.data() + start[i], start[i + 1] - start[i]};
+  }
 
   std::vector<Edge*> edges_;
   std::vector<Vertex*> vertices_;
@@ -84,9 +94,11 @@ class BlockSystem {
   int freeCount_ = 0;
   int scalarCount_ = 0;
   std::vector<Block> blocks_;
-  std::vector<std::vector<int>> rowBlocks_, colBlocks_;
-  std::vector<std::vector<Contribution>> blockContributions_;
-  std::vector<double> values_;
+  std::vector<std::size_t> rowStart_, colStart_;  // CSR of the blocks by row and by column
+  std::vector<int> rowBlockIds_, colBlockIds_;
+  std::vector<std::size_t> contributionStart_;  // CSR of each block's edges, in edge order
+  LargeArray<Contribution> contributions_;
+  LargeArray<double> values_;
   Eigen::VectorXd gradient_, diagonal_;
   std::vector<double> savedEstimates_;
   std::vector<std::size_t> estimateOffsets_;

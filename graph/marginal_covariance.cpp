@@ -39,7 +39,7 @@ Eigen::MatrixXd marginalCovariance(Graph& graph, const std::vector<const Vertex*
       reduced.block(system.offset(block.col), system.offset(block.row), h.cols(), h.rows()) = h.transpose();
   }
   for (int l = system.freeCount(); l < system.blockCount(); ++l) {
-    const std::vector<int>& column = system.colBlocks(l);  // couplings (i, l), i < l, then the diagonal (l, l)
+    const std::span<const int> column = system.colBlocks(l);  // couplings (i, l), i < l, then the diagonal (l, l)
     const int dl = system.dim(l);
     const Eigen::Map<const Eigen::MatrixXd> v(system.values(system.blocks()[column.back()]), dl, dl);
     const Eigen::LDLT<Eigen::MatrixXd> vInverse(v);
