@@ -109,13 +109,16 @@ SolveResult solveOnce(const Contender& contender, const BalProblem& start, const
   options.algorithm = named.algorithm;
   options.linearSolver = named.linearSolver;
   Graph graph = makeBalGraph(start);
+  const bench::SolveMemory memory;
   const Stopwatch stopwatch;
   const SolverSummary summary = Optimizer(options).optimize(graph);
-  return bench::resultFromSummary(summary, stopwatch);
+  SolveResult result = bench::resultFromSummary(summary, stopwatch);
+  result.solveMegabytes = memory.addedMegabytes();
+  return result;
 }
 
 void printResults(const std::vector<BenchRow>& rows) {
-  bench::TextTable table({"problem", "solver", "threads", "iterations", "s/iteration", "total s", "cpu s",
+  bench::TextTable table({"problem", "solver", "threads", "iterations", "s/iteration", "total s", "cpu s", "solve MB",
                           "initial cost", "final cost", "stop", "time/Ceres", "time/fastest", "cost/Ceres"});
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const BenchRow& row = rows[i];
@@ -123,9 +126,9 @@ void printResults(const std::vector<BenchRow>& rows) {
     if (i > 0 && (row.problem != rows[i - 1].problem || row.threads != rows[i - 1].threads)) table.addSeparator();
     table.addRow({row.problem, row.solver, std::to_string(row.threads), std::to_string(r.iterations),
                   format("%.4f", r.secondsPerIteration()), format("%.3f", r.totalSeconds), format("%.3f", r.cpuSeconds),
-                  format("%.8e", r.initialCost), format("%.8e", r.finalCost), r.termination,
-                  bench::formatRatio(row.ratioTime), bench::formatRatio(row.ratioTimeFastest),
-                  bench::formatRatio(row.ratioCost)});
+                  r.solveMegabytes ? format("%.1f", *r.solveMegabytes) : "-", format("%.8e", r.initialCost),
+                  format("%.8e", r.finalCost), r.termination, bench::formatRatio(row.ratioTime),
+                  bench::formatRatio(row.ratioTimeFastest), bench::formatRatio(row.ratioCost)});
   }
   table.print(std::cout);
 }
@@ -207,6 +210,8 @@ void printPreamble(const SolverOptions& stopping, int repeat) {
                    repeat)
             << "iterations = steps computed (Ceres: its summary's iterations plus the last step, which it computes "
                "and discards when a tolerance stops it); s/iteration = (total - setup) / iterations\n"
+            << "solve MB = resident memory the solve call added at its peak (the model built before it, our graph "
+               "or Ceres' Problem, not counted)\n"
             << "note: Ceres scales Jacobian columns (jacobi_scaling) and damps diag(J^T J) of the scaled system; "
                "ours damps diag(H) (1 + lambda) unscaled: close analogues, not identical steps\n\n";
 }

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <optional>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -20,6 +22,31 @@ CLI::App& benchSubcommand(CLI::App& app) {
   CLI::App* bench = app.add_subcommand("bench", "Compare this project's solvers with Ceres on generated problems");
   bench->require_subcommand(1);
   return *bench;
+}
+
+namespace {
+
+// A "Vm...:" line of /proc/self/status in megabytes, if there is one.
+std::optional<double> procStatusMegabytes(const std::string& key) {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind(key + ":", 0) == 0) return std::stod(line.substr(key.size() + 1)) / 1024.0;  // kB
+  return std::nullopt;
+}
+
+}  // namespace
+
+SolveMemory::SolveMemory() {
+  std::ofstream clear("/proc/self/clear_refs");
+  if (!(clear << "5" << std::flush)) return;  // the peak cannot be reset: no figure
+  residentBefore_ = procStatusMegabytes("VmRSS");
+}
+
+std::optional<double> SolveMemory::addedMegabytes() const {
+  const std::optional<double> peak = procStatusMegabytes("VmHWM");
+  if (!residentBefore_ || !peak) return std::nullopt;
+  return std::max(0.0, *peak - *residentBefore_);
 }
 
 SolveResult resultFromSummary(const SolverSummary& summary, const Stopwatch& stopwatch) {
@@ -101,6 +128,7 @@ nlohmann::ordered_json rowsToJson(const std::vector<BenchRow>& rows) {
     object["linear_solve_s"] = r.linearSolveSeconds;
     object["schur_s"] = optionalNumber(r.schurSeconds);
     object["cost_s"] = r.costSeconds;
+    object["solve_mb"] = optionalNumber(r.solveMegabytes);
     list.push_back(std::move(object));
   }
   return list;

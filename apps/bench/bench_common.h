@@ -30,14 +30,29 @@ struct SolveResult {
   double totalSeconds = 0.0;  // wall time of the solve call alone
   double cpuSeconds = 0.0;    // process CPU time of the same call, all threads
   std::string termination;
-  double setupSeconds = 0.0;           // ordering, symbolic analysis
-  double linearizeSeconds = 0.0;       // residuals and Jacobians (ours: also the H and g blocks)
-  double linearSolveSeconds = 0.0;     // Schur elimination, factorisation, back-substitution
-  std::optional<double> schurSeconds;  // part of linearSolveSeconds, when the library reports it
-  double costSeconds = 0.0;            // cost of trial steps
+  double setupSeconds = 0.0;             // ordering, symbolic analysis
+  double linearizeSeconds = 0.0;         // residuals and Jacobians (ours: also the H and g blocks)
+  double linearSolveSeconds = 0.0;       // Schur elimination, factorisation, back-substitution
+  std::optional<double> schurSeconds;    // part of linearSolveSeconds, when the library reports it
+  double costSeconds = 0.0;              // cost of trial steps
+  std::optional<double> solveMegabytes;  // memory the solve call added at its peak (SolveMemory)
 
   // Time of one iteration of the minimiser loop: (total - setup) / iterations.
   double secondsPerIteration() const { return (totalSeconds - setupSeconds) / (iterations > 0 ? iterations : 1); }
+};
+
+// The memory one solve call adds to the process: its resident size at the
+// peak during the call above its resident size just before (Linux: the peak is
+// reset through /proc/self/clear_refs). The model's own memory, built before
+// the call (our graph, Ceres' Problem), is not counted. Nothing where /proc
+// cannot tell.
+class SolveMemory {
+ public:
+  SolveMemory();                                 // resets the peak; construct just before the solve call
+  std::optional<double> addedMegabytes() const;  // read just after it
+
+ private:
+  std::optional<double> residentBefore_;
 };
 
 // Our SolverSummary in the common form, with the times the stopwatch measured around the solve.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include <ceres/autodiff_cost_function.h>
@@ -101,10 +102,12 @@ SolveResult solveBalWithCeres(BalProblem& problem, const SolverOptions& stopping
   if (!options.IsValid(&invalid)) throw Error("bench: Ceres rejects the solver options: " + invalid);
 
   ceres::Solver::Summary summary;
+  const SolveMemory memory;
   const Stopwatch stopwatch;
   ceres::Solve(options, &ceresProblem, &summary);
   const double seconds = stopwatch.seconds();
   const double cpuSeconds = stopwatch.cpuSeconds();
+  const std::optional<double> megabytes = memory.addedMegabytes();
   if (summary.termination_type == ceres::FAILURE || summary.iterations.empty())
     throw Error("bench: Ceres failed: " + summary.message);
 
@@ -124,6 +127,7 @@ SolveResult solveBalWithCeres(BalProblem& problem, const SolverOptions& stopping
   result.linearizeSeconds = summary.jacobian_evaluation_time_in_seconds;
   result.linearSolveSeconds = summary.linear_solver_time_in_seconds;
   result.costSeconds = summary.residual_evaluation_time_in_seconds;
+  result.solveMegabytes = megabytes;
   return result;
 }
 
