@@ -10,6 +10,10 @@
 #include <optional>
 #include <string>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include <CLI/CLI.hpp>
 
 #include "lrsvo/graph/error.h"
@@ -38,6 +42,9 @@ std::optional<double> procStatusMegabytes(const std::string& key) {
 }  // namespace
 
 SolveMemory::SolveMemory() {
+#if defined(__GLIBC__)
+  malloc_trim(0);  // freed memory the C library kept would otherwise be reused unseen
+#endif
   std::ofstream clear("/proc/self/clear_refs");
   if (!(clear << "5" << std::flush)) return;  // the peak cannot be reset: no figure
   residentBefore_ = procStatusMegabytes("VmRSS");
