@@ -69,7 +69,7 @@ void SchurSolver::eliminatePoint(const BlockSystem& system, const Eigen::VectorX
                                  Eigen::VectorXd& reducedRhs, double* y) const {
   using Coupling = Eigen::Matrix<double, Eigen::Dynamic, DL>;
   const auto& blocks = system.blocks();
-  const auto& couplings = marginalCouplings_[l];
+  const std::span<const int> couplings = couplingsOf(system, l);
   const auto rowBefore = [&](int coupling, int row) { return blocks[coupling].row < row; };
   const auto begin = std::lower_bound(couplings.begin(), couplings.end(), first, rowBefore);
   const auto end = std::lower_bound(begin, couplings.end(), last, rowBefore);
@@ -105,7 +105,7 @@ void SchurSolver::backSubstitute(const BlockSystem& system, const Eigen::VectorX
   const int v = system.freeCount() + l, dl = system.dim(v);
   const auto& blocks = system.blocks();
   Vector r = rhs.segment(system.offset(v), dl);
-  for (int k : marginalCouplings_[l]) {
+  for (int k : couplingsOf(system, l)) {
     const int i = blocks[k].row, di = system.dim(i);
     r.noalias() -=
         Eigen::Map<const Coupling>(system.values(blocks[k]), di, dl).transpose() * xFree.segment(system.offset(i), di);
@@ -118,46 +118,37 @@ void SchurSolver::analyze(const BlockSystem& system) {
   const int freeCount = system.freeCount();
   const int marginalCount = system.blockCount() - freeCount;
   const auto& blocks = system.blocks();
-
-  std::vector<std::vector<int>> rowCopyBlocks(freeCount);
-  std::vector<std::vector<int>> rowCouplings(freeCount);  // per free row i: system blocks (i, l)
-  marginalCouplings_.assign(marginalCount, {});
-  for (int k = 0; k < static_cast<int>(blocks.size()); ++k) {
-    const auto& block = blocks[k];
-    if (block.col < freeCount) {
-      rowCopyBlocks[block.row].push_back(k);
-    } else if (block.row < freeCount) {
-      rowCouplings[block.row].push_back(k);
-      marginalCouplings_[block.col - freeCount].push_back(k);
-    } else if (block.row != block.col) {
+  for (const auto& block : blocks)
+    if (block.row >= freeCount && block.row != block.col)
       throw Error("Schur solver: an edge joins marginalised vertices " +
                   std::to_string(system.vertex(block.row)->id()) + " and " +
                   std::to_string(system.vertex(block.col)->id()) + "; use a full solver");
-    }
-  }
-  const auto byRow = [&](int a, int b) { return blocks[a].row < blocks[b].row; };
-  for (auto& couplings : marginalCouplings_) std::sort(couplings.begin(), couplings.end(), byRow);
 
-  // The pattern of S, row by row: the diagonal, H's free-free blocks, and
-  // (i, j) for every pair of rows i <= j coupled to one marginalised vertex.
+  // The pattern of S, row by row: the diagonal, H's free-free blocks of row i
+  // (its blocks before the couplings, by column), and (i, j) for every pair of
+  // rows i <= j coupled to one marginalised vertex.
   rowStart_.assign(1, 0);
   columns_.clear();
+  rowCopies_.assign(freeCount, {});
   rowWork_.assign(freeCount, 0.0);
   std::vector<int> seenInRow(freeCount, -1);
   std::vector<int> row;
   for (int i = 0; i < freeCount; ++i) {
-    row.assign(1, i);
-    seenInRow[i] = i;
+    row.clear();
     const auto add = [&](int j) {
       if (seenInRow[j] != i) {
         seenInRow[j] = i;
         row.push_back(j);
       }
     };
-    for (int k : rowCopyBlocks[i]) add(blocks[k].col);
-    for (int k : rowCouplings[i]) {
-      const auto& couplings = marginalCouplings_[blocks[k].col - freeCount];
-      for (auto c = std::lower_bound(couplings.begin(), couplings.end(), k, byRow); c != couplings.end(); ++c) {
+    for (int k : system.rowBlocks(i)) {
+      rowWork_[i] += 1.0;
+      if (blocks[k].col < freeCount) {
+        add(blocks[k].col);
+        continue;
+      }
+      const std::span<const int> couplings = couplingsOf(system, blocks[k].col - freeCount);
+      for (auto c = std::find(couplings.begin(), couplings.end(), k); c != couplings.end(); ++c) {
         add(blocks[*c].row);
         rowWork_[i] += 1.0;
       }
@@ -165,11 +156,10 @@ void SchurSolver::analyze(const BlockSystem& system) {
     std::sort(row.begin(), row.end());
     columns_.insert(columns_.end(), row.begin(), row.end());
     rowStart_.push_back(columns_.size());
-    rowWork_[i] += static_cast<double>(rowCopyBlocks[i].size() + rowCouplings[i].size());
   }
-  rowCopies_.assign(freeCount, {});
   for (int i = 0; i < freeCount; ++i)
-    for (int k : rowCopyBlocks[i]) rowCopies_[i].push_back({k, reducedBlock(i, blocks[k].col)});
+    for (int k : system.rowBlocks(i))
+      if (blocks[k].col < freeCount) rowCopies_[i].push_back({k, reducedBlock(i, blocks[k].col)});
 
   maxCouplingSize_ = 0;
   for (const auto& block : blocks)
@@ -190,12 +180,11 @@ void SchurSolver::analyze(const BlockSystem& system) {
   pairs.reserve(columns_.size());
   for (int i = 0; i < freeCount; ++i)
     for (std::size_t p = rowStart_[i]; p < rowStart_[i + 1]; ++p) pairs.emplace_back(i, columns_[p]);
-  reducedBlockCount_ = static_cast<int>(pairs.size());
   // With every active vertex marginalised there is no reduced system to factorise.
   targets_.clear();
   if (freeCount == 0) return;
   backend_->analyze(dims, pairs);
-  for (int k = 0; k < reducedBlockCount_; ++k) targets_.push_back(backend_->block(k));
+  for (int k = 0; k < reducedBlockCount(); ++k) targets_.push_back(backend_->block(k));
 }
 
 int SchurSolver::reducedBlock(int i, int j) const {
@@ -220,7 +209,7 @@ void SchurSolver::eliminate(const BlockSystem& system, const Eigen::VectorXd& rh
                             Eigen::VectorXd& reducedRhs) const {
   const int freeCount = system.freeCount();
   std::vector<double> y(maxCouplingSize_);
-  for (int l = 0; l < static_cast<int>(marginalCouplings_.size()); ++l) {
+  for (int l = 0; l < system.blockCount() - freeCount; ++l) {
     if (system.dim(freeCount + l) == 3)
       eliminatePoint<3>(system, rhs, l, first, last, reducedRhs, y.data());
     else

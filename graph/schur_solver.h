@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "lrsvo/graph/linear_solver.h"
@@ -29,7 +30,7 @@ class SchurSolver : public LinearSolver {
   bool solve(const BlockSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) override;
 
   // Number of blocks in the reduced system (for tests and diagnostics).
-  int reducedBlockCount() const { return reducedBlockCount_; }
+  int reducedBlockCount() const { return static_cast<int>(columns_.size()); }
 
  private:
   using Kernel = void (*)(const double* y, const double* w, double* s, int ld, int di, int dl, int dj);
@@ -54,6 +55,12 @@ class SchurSolver : public LinearSolver {
   template <int DL>
   void eliminatePoint(const BlockSystem& system, const Eigen::VectorXd& rhs, int l, int first, int last,
                       Eigen::VectorXd& reducedRhs, double* y) const;
+  // The couplings (i, l) of marginalised vertex l, by row: its column of H but
+  // the diagonal, which comes last.
+  static std::span<const int> couplingsOf(const BlockSystem& system, int l) {
+    const std::span<const int> column = system.colBlocks(system.freeCount() + l);
+    return column.first(column.size() - 1);
+  }
   // Backend block index of S(i, j), a block of the pattern.
   int reducedBlock(int i, int j) const;
   // x_l = V^-1 (r_l - sum_i W_il^T x_i).
@@ -62,7 +69,6 @@ class SchurSolver : public LinearSolver {
                       Eigen::VectorXd& x) const;
 
   std::unique_ptr<SymmetricBackend> backend_;
-  int reducedBlockCount_ = 0;
   // The pattern of S by rows: row i's block columns (ascending) are
   // columns_[rowStart_[i], rowStart_[i + 1]), and the position there is the
   // backend's block index.
@@ -70,10 +76,9 @@ class SchurSolver : public LinearSolver {
   std::vector<int> columns_;
   std::vector<SymmetricBackend::BlockRef> targets_;  // per backend block, fixed by its analyze()
   std::vector<std::vector<Copy>> rowCopies_;
-  std::vector<std::vector<int>> marginalCouplings_;  // per marginalised l: system blocks (i, l)
-  std::vector<double> rowWork_;                      // per free row i: its updates and blocks, its share of the work
-  std::size_t maxCouplingSize_ = 0;                  // the largest W_il's entry count
-  std::vector<std::size_t> vInverseOffsets_;         // per marginalised vertex
+  std::vector<double> rowWork_;               // per free row i: its updates and blocks, its share of the work
+  std::size_t maxCouplingSize_ = 0;           // the largest W_il's entry count
+  std::vector<std::size_t> vInverseOffsets_;  // per marginalised vertex
   std::vector<double> vInverseValues_;
 };
 
