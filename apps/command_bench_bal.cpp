@@ -1,6 +1,6 @@
-// `lrsvo bench bal`: this project's Schur solvers against Ceres' SPARSE_SCHUR
-// and DENSE_SCHUR on generated BAL problems, same start and stopping rules,
-// at each thread count, in one process.
+// `lrsvo bench bal`: this project's Schur solvers against Ceres' SPARSE_SCHUR,
+// DENSE_SCHUR and ITERATIVE_SCHUR on generated BAL problems, same start and
+// stopping rules, at each thread count, in one process.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -37,7 +37,8 @@ struct BenchBalOptions {
   int observationsPerPoint = BalGeneratorOptions{}.observationsPerPoint;
   double startNoise = 1.0;
   std::vector<int> threads{1, 2};
-  std::vector<std::string> solvers{"lm_schur_cholmod", "lm_schur_dense", "SPARSE_SCHUR", "DENSE_SCHUR"};
+  std::vector<std::string> solvers{"lm_schur_cholmod", "lm_schur_dense", "lm_schur_pcg",
+                                   "SPARSE_SCHUR",     "DENSE_SCHUR",    "ITERATIVE_SCHUR"};
   int maxIterations = 50;
   int repeat = 1;
   std::string json;
@@ -72,7 +73,7 @@ ProblemSize parseSize(const std::string& text) {
 }
 
 // One solver of the comparison. Ours and Ceres of the same family (sparse or
-// dense reduced system) are compared head to head.
+// dense reduced system, or iterative) are compared head to head.
 struct Contender {
   const char* key;    // its name in --solvers
   const char* label;  // as printed
@@ -84,8 +85,11 @@ struct Contender {
 const Contender kContenders[] = {
     {"lm_schur_cholmod", "lm_schur_cholmod", "sparse", false, ceres::SPARSE_SCHUR},
     {"lm_schur_dense", "lm_schur_dense", "dense", false, ceres::DENSE_SCHUR},
+    {"lm_schur_pcg", "lm_schur_pcg", "iterative", false, ceres::ITERATIVE_SCHUR},
+    {"lm_schur_power_series", "lm_schur_power_series", "iterative", false, ceres::ITERATIVE_SCHUR},
     {"SPARSE_SCHUR", "ceres SPARSE_SCHUR", "sparse", true, ceres::SPARSE_SCHUR},
     {"DENSE_SCHUR", "ceres DENSE_SCHUR", "dense", true, ceres::DENSE_SCHUR},
+    {"ITERATIVE_SCHUR", "ceres ITERATIVE_SCHUR", "iterative", true, ceres::ITERATIVE_SCHUR},
 };
 
 std::vector<const Contender*> selectContenders(const std::vector<std::string>& keys) {
@@ -95,7 +99,8 @@ std::vector<const Contender*> selectContenders(const std::vector<std::string>& k
   for (const std::string& key : keys)
     if (std::none_of(std::begin(kContenders), std::end(kContenders), [&](const Contender& c) { return key == c.key; }))
       throw Error("bench bal: unknown solver '" + key +
-                  "' in --solvers (known: lm_schur_cholmod, lm_schur_dense, SPARSE_SCHUR, DENSE_SCHUR)");
+                  "' in --solvers (known: lm_schur_cholmod, lm_schur_dense, lm_schur_pcg, lm_schur_power_series, "
+                  "SPARSE_SCHUR, DENSE_SCHUR, ITERATIVE_SCHUR)");
   return selected;
 }
 
@@ -293,7 +298,7 @@ void runBenchBal(const BenchBalOptions& options) {
 void addBenchBal(CLI::App& app) {
   auto options = std::make_shared<BenchBalOptions>();
   CLI::App* command = bench::benchSubcommand(app).add_subcommand(
-      "bal", "Our Schur solvers against Ceres SPARSE_SCHUR / DENSE_SCHUR on generated BAL problems");
+      "bal", "Our Schur solvers against Ceres SPARSE_SCHUR / DENSE_SCHUR / ITERATIVE_SCHUR on generated BAL problems");
   command->add_option("--sizes", options->sizes, "Problems as [name:]CAMERASxPOINTS")->capture_default_str();
   command->add_option("--seed", options->seed, "Seed of the problem generator")->capture_default_str();
   command->add_option("--observations-per-point", options->observationsPerPoint, "Mean observations per point")

@@ -6,6 +6,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "lrsvo/graph/block_kernels.h"
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/parallel_for.h"
 
@@ -122,15 +123,19 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
   for (std::size_t e = 0; e < entries.size(); ++e)
     contributions_[next[static_cast<std::size_t>(entryBlock[e])]++] = entries[e].contribution;
 
-  // Values laid out by row, then column; each column's blocks listed by row.
+  // Each column's blocks listed by row.
   colBlockIds_.resize(rowBlockIds_.size());
   std::vector<std::size_t> nextInColumn(colStart_.begin(), colStart_.end() - 1);
+  for (int id : rowBlockIds_)
+    colBlockIds_[nextInColumn[static_cast<std::size_t>(blocks_[static_cast<std::size_t>(id)].col)]++] = id;
+  // Values laid out by column, then row: a marginalised vertex's couplings and
+  // its diagonal block are contiguous, for the Schur solvers' point-by-point
+  // passes and fill()'s column-by-column sums.
   std::size_t size = 0;
-  for (int id : rowBlockIds_) {
+  for (int id : colBlockIds_) {
     Block& block = blocks_[static_cast<std::size_t>(id)];
     block.offset = size;
     size += static_cast<std::size_t>(dims_[block.row]) * dims_[block.col];
-    colBlockIds_[nextInColumn[static_cast<std::size_t>(block.col)]++] = id;
   }
   values_.assign(size, 0.0);
   gradient_ = Eigen::VectorXd::Zero(scalarCount_);
@@ -214,11 +219,12 @@ void BlockSystem::holdCoordinate(int block, int coordinate) {
 Eigen::VectorXd BlockSystem::multiply(const Eigen::VectorXd& x) const {
   Eigen::VectorXd y = Eigen::VectorXd::Zero(scalarCount_);
   for (const Block& block : blocks_) {
-    Eigen::Map<const Eigen::MatrixXd> m(values(block), dims_[block.row], dims_[block.col]);
-    y.segment(offsets_[block.row], dims_[block.row]) += m * x.segment(offsets_[block.col], dims_[block.col]);
+    const int rows = dims_[block.row], cols = dims_[block.col];
+    kernels::accumulateBlock<false>(values(block), x.data() + offsets_[block.col], y.data() + offsets_[block.row], rows,
+                                    cols, 1.0);
     if (block.row != block.col)
-      y.segment(offsets_[block.col], dims_[block.col]) +=
-          m.transpose() * x.segment(offsets_[block.row], dims_[block.row]);
+      kernels::accumulateBlock<true>(values(block), x.data() + offsets_[block.row], y.data() + offsets_[block.col],
+                                     rows, cols, 1.0);
   }
   return y;
 }

@@ -43,6 +43,9 @@ class BlockSystem {
   // Blocks of row r (columns >= r), sorted by column; the first is the diagonal.
   std::span<const int> rowBlocks(int row) const { return slice(rowBlockIds_, rowStart_, row); }
   // Blocks of column c (rows <= c), sorted by row; the last is the diagonal.
+  // Their values lie one after another in that order (column-major blocks,
+  // each rows x cols), so a marginalised vertex's couplings and its diagonal
+  // block are one contiguous stretch.
   std::span<const int> colBlocks(int col) const { return slice(colBlockIds_, colStart_, col); }
   int diagonalBlock(int block) const { return block; }
   double* values(const Block& block) { return values_.data() + block.offset; }

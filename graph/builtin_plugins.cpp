@@ -7,6 +7,8 @@ void LinearSolver::addBuiltins(Registry<LinearSolver>& registry) {
   addCholmodSolver(registry);
   addSchurDenseSolver(registry);
   addSchurCholmodSolver(registry);
+  addSchurPcgSolver(registry);
+  addSchurPowerSeriesSolver(registry);
 }
 
 void OptimizationAlgorithm::addBuiltins(Registry<OptimizationAlgorithm>& registry) {

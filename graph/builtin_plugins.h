@@ -12,6 +12,8 @@ void addDenseSolver(Registry<LinearSolver>& registry);
 void addCholmodSolver(Registry<LinearSolver>& registry);
 void addSchurDenseSolver(Registry<LinearSolver>& registry);
 void addSchurCholmodSolver(Registry<LinearSolver>& registry);
+void addSchurPcgSolver(Registry<LinearSolver>& registry);
+void addSchurPowerSeriesSolver(Registry<LinearSolver>& registry);
 void addGaussNewton(Registry<OptimizationAlgorithm>& registry);
 void addLevenbergMarquardt(Registry<OptimizationAlgorithm>& registry);
 

@@ -16,7 +16,8 @@ template <typename Product>
 class Registry;
 
 // Solves H x = rhs for the block system. Registered by name in
-// Registry<LinearSolver>: "dense", "cholmod", "schur_dense", "schur_cholmod".
+// Registry<LinearSolver>: "dense", "cholmod", "schur_dense", "schur_cholmod",
+// and the iterative "schur_pcg" and "schur_power_series".
 class LinearSolver {
  public:
   // The graph library's linear solvers (Registry<LinearSolver> adds them on first use).
@@ -29,6 +30,9 @@ class LinearSolver {
   virtual void analyze(const BlockSystem& system) = 0;
   // Returns false when H is not positive definite (x is then undefined).
   virtual bool solve(const BlockSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) = 0;
+  // False for iterative solvers, whose steps solve H x = rhs only to their
+  // tolerance (the optimiser then predicts a step's decrease from H itself).
+  virtual bool exactSteps() const { return true; }
 
   const LinearSolverTimes& times() const { return times_; }
 

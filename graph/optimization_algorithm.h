@@ -52,7 +52,7 @@ class OptimizationContext {
   SolverSummary& summary_;
   Stopwatch stopwatch_;  // since the context was made
   double lastRecordSeconds_ = 0.0;
-  bool stepAdjusted_ = false;
+  bool stepSolvesTheSystem_ = true;
 };
 
 // The head of a solve's summary, shared by every minimiser (the optimiser's

@@ -23,16 +23,19 @@ bool OptimizationContext::solveStep(const Eigen::VectorXd& shift, Eigen::VectorX
   const bool ok = solver_.solve(system_, rhs, dx, options_.threads);
   summary_.schurSeconds = solver_.times().schurSeconds;
   summary_.factorizeSeconds = solver_.times().factorizeSeconds;
-  stepAdjusted_ = ok && constraints_.adjustStep(system_, dx);
+  // A step the constraints adjusted, or an iterative solver's, does not solve
+  // (H + D) dx = -g exactly.
+  const bool adjusted = ok && constraints_.adjustStep(system_, dx);
+  stepSolvesTheSystem_ = ok && !adjusted && solver_.exactSteps();
   return ok;
 }
 
 double OptimizationContext::predictedDecrease(const Eigen::VectorXd& shift, const Eigen::VectorXd& dx) const {
   const double linear = -system_.gradient().dot(dx);
   const double damping = dx.dot(shift.cwiseProduct(dx));
-  // Unchanged steps solve (H + D) dx = -g, so dx^T H dx = -g^T dx - dx^T D dx;
-  // the blocks hold H + D, so adjusted steps take dx^T (H + D) dx - dx^T D dx.
-  if (!stepAdjusted_) return 0.5 * (linear + damping);
+  // A step that solves (H + D) dx = -g has dx^T H dx = -g^T dx - dx^T D dx;
+  // any other takes dx^T (H + D) dx - dx^T D dx from the blocks, which hold H + D.
+  if (stepSolvesTheSystem_) return 0.5 * (linear + damping);
   return linear - 0.5 * (dx.dot(system_.multiply(dx)) - damping);
 }
 

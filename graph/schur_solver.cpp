@@ -2,11 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <string>
 
-#include <Eigen/Cholesky>
-
-#include "lrsvo/graph/error.h"
 #include "lrsvo/graph/parallel_for.h"
 #include "lrsvo/graph/stopwatch.h"
 
@@ -54,28 +50,17 @@ std::vector<int> balancedRanges(const std::vector<double>& work, int parts) {
 }  // namespace
 
 template <int DL>
-bool SchurSolver::invertMarginal(const BlockSystem& system, int l) {
-  using Square = Eigen::Matrix<double, DL, DL>;
-  const int v = system.freeCount() + l, dl = system.dim(v);
-  const auto& blocks = system.blocks();
-  Eigen::LLT<Square> llt(Eigen::Map<const Square>(system.values(blocks[system.diagonalBlock(v)]), dl, dl));
-  if (llt.info() != Eigen::Success) return false;
-  Eigen::Map<Square>(vInverseValues_.data() + vInverseOffsets_[l], dl, dl) = llt.solve(Square::Identity(dl, dl));
-  return true;
-}
-
-template <int DL>
 void SchurSolver::eliminatePoint(const BlockSystem& system, const Eigen::VectorXd& rhs, int l, int first, int last,
                                  Eigen::VectorXd& reducedRhs, double* y) const {
   using Coupling = Eigen::Matrix<double, Eigen::Dynamic, DL>;
   const auto& blocks = system.blocks();
-  const std::span<const int> couplings = couplingsOf(system, l);
+  const std::span<const int> couplings = marginalCouplings(system, l);
   const auto rowBefore = [&](int coupling, int row) { return blocks[coupling].row < row; };
   const auto begin = std::lower_bound(couplings.begin(), couplings.end(), first, rowBefore);
   const auto end = std::lower_bound(begin, couplings.end(), last, rowBefore);
   if (begin == end) return;
   const int v = system.freeCount() + l, dl = system.dim(v);
-  const Eigen::Map<const Eigen::Matrix<double, DL, DL>> vInverse(vInverseValues_.data() + vInverseOffsets_[l], dl, dl);
+  const Eigen::Map<const Eigen::Matrix<double, DL, DL>> vInverse(vInverses_.inverse(l), dl, dl);
   const auto rl = rhs.segment(system.offset(v), dl);
   for (auto a = begin; a != end; ++a) {
     const int i = blocks[*a].row, di = system.dim(i);
@@ -97,32 +82,10 @@ void SchurSolver::eliminatePoint(const BlockSystem& system, const Eigen::VectorX
   }
 }
 
-template <int DL>
-void SchurSolver::backSubstitute(const BlockSystem& system, const Eigen::VectorXd& rhs, const Eigen::VectorXd& xFree,
-                                 int l, Eigen::VectorXd& x) const {
-  using Vector = Eigen::Matrix<double, DL, 1>;
-  using Coupling = Eigen::Matrix<double, Eigen::Dynamic, DL>;
-  const int v = system.freeCount() + l, dl = system.dim(v);
-  const auto& blocks = system.blocks();
-  Vector r = rhs.segment(system.offset(v), dl);
-  for (int k : couplingsOf(system, l)) {
-    const int i = blocks[k].row, di = system.dim(i);
-    r.noalias() -=
-        Eigen::Map<const Coupling>(system.values(blocks[k]), di, dl).transpose() * xFree.segment(system.offset(i), di);
-  }
-  x.segment(system.offset(v), dl).noalias() =
-      Eigen::Map<const Eigen::Matrix<double, DL, DL>>(vInverseValues_.data() + vInverseOffsets_[l], dl, dl) * r;
-}
-
 void SchurSolver::analyze(const BlockSystem& system) {
+  vInverses_.analyze(system);
   const int freeCount = system.freeCount();
-  const int marginalCount = system.blockCount() - freeCount;
   const auto& blocks = system.blocks();
-  for (const auto& block : blocks)
-    if (block.row >= freeCount && block.row != block.col)
-      throw Error("Schur solver: an edge joins marginalised vertices " +
-                  std::to_string(system.vertex(block.row)->id()) + " and " +
-                  std::to_string(system.vertex(block.col)->id()) + "; use a full solver");
 
   // The pattern of S, row by row: the diagonal, H's free-free blocks of row i
   // (its blocks before the couplings, by column), and (i, j) for every pair of
@@ -147,7 +110,7 @@ void SchurSolver::analyze(const BlockSystem& system) {
         add(blocks[k].col);
         continue;
       }
-      const std::span<const int> couplings = couplingsOf(system, blocks[k].col - freeCount);
+      const std::span<const int> couplings = marginalCouplings(system, blocks[k].col - freeCount);
       for (auto c = std::find(couplings.begin(), couplings.end(), k); c != couplings.end(); ++c) {
         add(blocks[*c].row);
         rowWork_[i] += 1.0;
@@ -166,13 +129,6 @@ void SchurSolver::analyze(const BlockSystem& system) {
     if (block.row < freeCount && block.col >= freeCount)
       maxCouplingSize_ =
           std::max(maxCouplingSize_, static_cast<std::size_t>(system.dim(block.row)) * system.dim(block.col));
-  vInverseOffsets_.assign(marginalCount, 0);
-  std::size_t vSize = 0;
-  for (int l = 0; l < marginalCount; ++l) {
-    vInverseOffsets_[l] = vSize;
-    vSize += static_cast<std::size_t>(system.dim(freeCount + l)) * system.dim(freeCount + l);
-  }
-  vInverseValues_.assign(vSize, 0.0);
 
   std::vector<int> dims(freeCount);
   for (int i = 0; i < freeCount; ++i) dims[i] = system.dim(i);
@@ -220,16 +176,7 @@ void SchurSolver::eliminate(const BlockSystem& system, const Eigen::VectorXd& rh
 bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) {
   Stopwatch phase;
   const int freeCount = system.freeCount();
-  const int marginalCount = system.blockCount() - freeCount;
-
-  // V^-1 per marginalised vertex.
-  std::vector<char> positive(marginalCount, 1);
-  parallelFor(0, marginalCount, threads, [&](int l) {
-    positive[l] =
-        system.dim(freeCount + l) == 3 ? invertMarginal<3>(system, l) : invertMarginal<Eigen::Dynamic>(system, l);
-  });
-  for (char p : positive)
-    if (!p) return false;
+  if (!vInverses_.compute(system, threads)) return false;
 
   // Reduced system, by rows of blocks. Row i holds the updates of every j >= i,
   // so the rows' costs fall along S: each task takes a contiguous range of
@@ -253,12 +200,7 @@ bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, E
 
   x.resize(system.scalarCount());
   x.head(xFree.size()) = xFree;
-  parallelFor(0, marginalCount, threads, [&](int l) {
-    if (system.dim(freeCount + l) == 3)
-      backSubstitute<3>(system, rhs, xFree, l, x);
-    else
-      backSubstitute<Eigen::Dynamic>(system, rhs, xFree, l, x);
-  });
+  vInverses_.backSubstitute(system, rhs, x, threads);
   times_.schurSeconds += reduceSeconds + phase.seconds();
   times_.factorizeSeconds += solveSeconds;
   return x.allFinite();

@@ -2,10 +2,10 @@
 
 #include <cstddef>
 #include <memory>
-#include <span>
 #include <vector>
 
 #include "lrsvo/graph/linear_solver.h"
+#include "lrsvo/graph/marginal_block_inverses.h"
 #include "lrsvo/graph/symmetric_backend.h"
 
 namespace lrsvo {
@@ -39,9 +39,6 @@ class SchurSolver : public LinearSolver {
     int target;
   };
 
-  // V^-1 for marginalised vertex l; false if V is not positive definite.
-  template <int DL>
-  bool invertMarginal(const BlockSystem& system, int l);
   // Row i of S before the eliminations: its free-free blocks of H.
   void copyFreeBlocks(const BlockSystem& system, int i);
   // Eliminates every marginalised vertex from the rows [first, last) of S and
@@ -55,18 +52,8 @@ class SchurSolver : public LinearSolver {
   template <int DL>
   void eliminatePoint(const BlockSystem& system, const Eigen::VectorXd& rhs, int l, int first, int last,
                       Eigen::VectorXd& reducedRhs, double* y) const;
-  // The couplings (i, l) of marginalised vertex l, by row: its column of H but
-  // the diagonal, which comes last.
-  static std::span<const int> couplingsOf(const BlockSystem& system, int l) {
-    const std::span<const int> column = system.colBlocks(system.freeCount() + l);
-    return column.first(column.size() - 1);
-  }
   // Backend block index of S(i, j), a block of the pattern.
   int reducedBlock(int i, int j) const;
-  // x_l = V^-1 (r_l - sum_i W_il^T x_i).
-  template <int DL>
-  void backSubstitute(const BlockSystem& system, const Eigen::VectorXd& rhs, const Eigen::VectorXd& xFree, int l,
-                      Eigen::VectorXd& x) const;
 
   std::unique_ptr<SymmetricBackend> backend_;
   // The pattern of S by rows: row i's block columns (ascending) are
@@ -76,10 +63,9 @@ class SchurSolver : public LinearSolver {
   std::vector<int> columns_;
   std::vector<SymmetricBackend::BlockRef> targets_;  // per backend block, fixed by its analyze()
   std::vector<std::vector<Copy>> rowCopies_;
-  std::vector<double> rowWork_;               // per free row i: its updates and blocks, its share of the work
-  std::size_t maxCouplingSize_ = 0;           // the largest W_il's entry count
-  std::vector<std::size_t> vInverseOffsets_;  // per marginalised vertex
-  std::vector<double> vInverseValues_;
+  std::vector<double> rowWork_;      // per free row i: its updates and blocks, its share of the work
+  std::size_t maxCouplingSize_ = 0;  // the largest W_il's entry count
+  MarginalBlockInverses vInverses_;
 };
 
 }  // namespace lrsvo

@@ -26,7 +26,8 @@ std::set<std::string> namesIn() {
 }
 
 TEST(Registries, HoldEveryBuiltInPluginFromTheirFirstUse) {
-  EXPECT_EQ(namesIn<LinearSolver>(), (std::set<std::string>{"cholmod", "dense", "schur_cholmod", "schur_dense"}));
+  EXPECT_EQ(namesIn<LinearSolver>(), (std::set<std::string>{"cholmod", "dense", "schur_cholmod", "schur_dense",
+                                                            "schur_pcg", "schur_power_series"}));
   EXPECT_EQ(namesIn<OptimizationAlgorithm>(), (std::set<std::string>{"gn", "lm"}));
   EXPECT_EQ(namesIn<RobustKernel>(), (std::set<std::string>{"Cauchy", "Huber", "Tukey"}));
   EXPECT_EQ(namesIn<ConstraintMethod>(),

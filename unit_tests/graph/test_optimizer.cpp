@@ -73,10 +73,14 @@ TEST(Optimizer, LevenbergMarquardtNeverRaisesTheCost) {
   EXPECT_GT(rejected, 0) << "no step was ever rejected: the test did not exercise restoring estimates";
 }
 
+// The direct solvers take the same steps up to rounding, so the same number of
+// iterations ends at the same cost (the iterative ones, whose steps differ,
+// are held to the minimum in test_iterative_schur.cpp).
 TEST(Optimizer, FinalCostAgreesAcrossLinearSolvers) {
   for (bool bal : {false, true}) {
     double reference = -1.0;
     for (const auto& [name, entry] : Registry<LinearSolver>::instance().entries()) {
+      if (!entry.factory()->exactSteps()) continue;
       BalToyOptions balOptions;
       balOptions.cameras = 5;
       balOptions.points = 40;

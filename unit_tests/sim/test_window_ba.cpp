@@ -101,11 +101,17 @@ TEST(WindowProblem, ImpossibleTrackLengthIsAnError) {
   EXPECT_THROW(makeWindowProblem(options), Error);
 }
 
+// Every linear solver but the power series, which needs the free vertices
+// coupled only through points and so refuses the extrinsic joining the poses.
 TEST(WindowBa, EveryLinearSolverReachesTheSameCost) {
   const WindowProblemOptions options;
   double reference = -1.0;
   for (const auto& [name, entry] : Registry<LinearSolver>::instance().entries()) {
     WindowProblem problem = makeWindowProblem(options);
+    if (name == "schur_power_series") {
+      EXPECT_THROW(Optimizer(lmOptions(name)).optimize(problem.graph), Error);
+      continue;
+    }
     const SolverSummary summary = Optimizer(lmOptions(name)).optimize(problem.graph);
     std::printf("  %-14s initial %.6e final %.6e iterations %d  %.3f s\n", name.c_str(), summary.initialCost,
                 summary.finalCost, summary.iterationCount(), summary.totalSeconds);
