@@ -4,7 +4,9 @@
 
 // Small dense products on H's column-major blocks, with fixed-size paths for
 // the shapes of bundle adjustment (cameras of 9 or poses of 6, points of 3);
-// any other shape takes Eigen's dynamic ones.
+// any other shape takes Eigen's dynamic ones. Always inlined: they run once per
+// block in the solvers' innermost loops, where a call (through the shared
+// library's PLT) costs as much as the product.
 namespace lrsvo::kernels {
 
 template <int R, int C>
@@ -12,7 +14,8 @@ using BlockMap = Eigen::Map<const Eigen::Matrix<double, R, C>>;
 
 // y += sign A x, or y += sign A^T x, for a rows x cols block A.
 template <int R, int C, bool Transposed>
-void accumulate(const double* a, const double* x, double* y, int rows, int cols, double sign) {
+[[gnu::always_inline]] inline void accumulate(const double* a, const double* x, double* y, int rows, int cols,
+                                              double sign) {
   using InVector = Eigen::Map<const Eigen::Matrix<double, Transposed ? R : C, 1>>;
   using OutVector = Eigen::Map<Eigen::Matrix<double, Transposed ? C : R, 1>>;
   if constexpr (Transposed)
@@ -22,7 +25,8 @@ void accumulate(const double* a, const double* x, double* y, int rows, int cols,
 }
 
 template <bool Transposed>
-inline void accumulateBlock(const double* a, const double* x, double* y, int rows, int cols, double sign) {
+[[gnu::always_inline]] inline void accumulateBlock(const double* a, const double* x, double* y, int rows, int cols,
+                                                   double sign) {
   constexpr int X = Eigen::Dynamic;
   if (cols == 3 && rows == 9) return accumulate<9, 3, Transposed>(a, x, y, rows, cols, sign);
   if (cols == 3 && rows == 6) return accumulate<6, 3, Transposed>(a, x, y, rows, cols, sign);
@@ -33,13 +37,14 @@ inline void accumulateBlock(const double* a, const double* x, double* y, int row
 
 // d -= W V W^T for a rows x cols block W and a cols x cols block V.
 template <int R, int C>
-void subtractCongruence(const double* w, const double* v, double* d, int rows, int cols) {
+[[gnu::always_inline]] [[gnu::always_inline]] inline void subtractCongruence(const double* w, const double* v,
+                                                                             double* d, int rows, int cols) {
   const BlockMap<R, C> wm(w, rows, cols);
   Eigen::Map<Eigen::Matrix<double, R, R>>(d, rows, rows).noalias() -=
       wm * BlockMap<C, C>(v, cols, cols) * wm.transpose();
 }
 
-inline void subtractCongruence(const double* w, const double* v, double* d, int rows, int cols) {
+[[gnu::always_inline]] inline void subtractCongruence(const double* w, const double* v, double* d, int rows, int cols) {
   constexpr int X = Eigen::Dynamic;
   if (cols == 3 && rows == 9) return subtractCongruence<9, 3>(w, v, d, rows, cols);
   if (cols == 3 && rows == 6) return subtractCongruence<6, 3>(w, v, d, rows, cols);

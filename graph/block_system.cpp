@@ -88,13 +88,13 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
       }
     }
   }
-  // Grouped by pair, row by row and column by column, each pair's edges in
+  // Grouped by pair, column by column and row by row, each pair's edges in
   // edge order (the order H's blocks sum them in).
-  entries = stableCountingSort(entries, blockCount(), [](const Entry& e) { return e.col; });
   entries = stableCountingSort(entries, blockCount(), [](const Entry& e) { return e.row; });
+  entries = stableCountingSort(entries, blockCount(), [](const Entry& e) { return e.col; });
 
   // Block ids: the diagonal of vertex i is block i, the others follow in
-  // that order. rowBlockIds_ lists every block in that order.
+  // that order. colBlockIds_ lists every block in that order.
   for (int i = 0; i < blockCount(); ++i) blocks_.push_back(Block{i, i, 0});
   LargeArray<int> entryBlock(entries.size());
   rowStart_.assign(blockCount() + 1, 0);
@@ -105,7 +105,7 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
     if (newPair && entry.row != entry.col) blocks_.push_back(Block{entry.row, entry.col, 0});
     entryBlock[e] = entry.row == entry.col ? entry.row : static_cast<int>(blocks_.size()) - 1;
     if (newPair) {
-      rowBlockIds_.push_back(entryBlock[e]);
+      colBlockIds_.push_back(entryBlock[e]);
       ++rowStart_[entry.row + 1];
       ++colStart_[entry.col + 1];
     }
@@ -123,11 +123,11 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
   for (std::size_t e = 0; e < entries.size(); ++e)
     contributions_[next[static_cast<std::size_t>(entryBlock[e])]++] = entries[e].contribution;
 
-  // Each column's blocks listed by row.
-  colBlockIds_.resize(rowBlockIds_.size());
-  std::vector<std::size_t> nextInColumn(colStart_.begin(), colStart_.end() - 1);
-  for (int id : rowBlockIds_)
-    colBlockIds_[nextInColumn[static_cast<std::size_t>(blocks_[static_cast<std::size_t>(id)].col)]++] = id;
+  // Each row's blocks listed by column.
+  rowBlockIds_.resize(colBlockIds_.size());
+  std::vector<std::size_t> nextInRow(rowStart_.begin(), rowStart_.end() - 1);
+  for (int id : colBlockIds_)
+    rowBlockIds_[nextInRow[static_cast<std::size_t>(blocks_[static_cast<std::size_t>(id)].row)]++] = id;
   // Values laid out by column, then row: a marginalised vertex's couplings and
   // its diagonal block are contiguous, for the Schur solvers' point-by-point
   // passes and fill()'s column-by-column sums.

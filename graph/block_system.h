@@ -37,8 +37,8 @@ class BlockSystem {
   // Block index of a vertex, or -1 when it is fixed or on no edge.
   int blockOf(const Vertex* vertex) const;
 
-  // The diagonal block of vertex i is block i; the others follow row by row,
-  // each row's by column.
+  // The diagonal block of vertex i is block i; the others follow column by
+  // column, each column's by row (the order of the Schur solvers' passes).
   const std::vector<Block>& blocks() const { return blocks_; }
   // Blocks of row r (columns >= r), sorted by column; the first is the diagonal.
   std::span<const int> rowBlocks(int row) const { return slice(rowBlockIds_, rowStart_, row); }
@@ -50,6 +50,8 @@ class BlockSystem {
   int diagonalBlock(int block) const { return block; }
   double* values(const Block& block) { return values_.data() + block.offset; }
   const double* values(const Block& block) const { return values_.data() + block.offset; }
+  // Every block's values; block b's start at valueData() + b.offset.
+  const double* valueData() const { return values_.data(); }
 
   const Eigen::VectorXd& gradient() const { return gradient_; }
   // Undamped diagonal of H.

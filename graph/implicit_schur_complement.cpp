@@ -29,7 +29,9 @@ void ImplicitSchurComplement::analyze(const BlockSystem& system) {
   const int marginalCount = system.blockCount() - system.freeCount();
   couplingStart_.assign(1, 0);
   couplingRows_.clear();
+  columnOffsets_.resize(marginalCount);
   for (int l = 0; l < marginalCount; ++l) {
+    columnOffsets_[l] = system.blocks()[system.colBlocks(system.freeCount() + l).front()].offset;
     for (int k : marginalCouplings(system, l)) {
       const int i = system.blocks()[k].row;
       couplingRows_.push_back({system.offset(i), system.dim(i)});
@@ -72,7 +74,7 @@ void ImplicitSchurComplement::subtractEliminated(const BlockSystem& system, cons
   const CouplingRow* first = couplingRows_.data() + couplingStart_[l];
   const CouplingRow* last = couplingRows_.data() + couplingStart_[l + 1];
   // The couplings' values, one block after another (BlockSystem::colBlocks).
-  const double* columnValues = system.values(system.blocks()[system.colBlocks(v).front()]);
+  const double* columnValues = system.valueData() + columnOffsets_[l];
   Vector t(dl);
   if (x) {
     t.setZero();

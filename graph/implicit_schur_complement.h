@@ -70,6 +70,7 @@ class ImplicitSchurComplement {
 
   MarginalBlockInverses vInverses_;
   std::vector<std::size_t> couplingStart_;  // per marginalised vertex, into couplingRows_
+  std::vector<std::size_t> columnOffsets_;  // per marginalised vertex, where its column's values start
   std::vector<CouplingRow> couplingRows_;
   Eigen::MatrixXd partials_;          // a column per chunk of marginalised vertices
   Eigen::MatrixXd diagonalPartials_;  // the same for S's diagonal blocks, when formed
