@@ -11,7 +11,8 @@ namespace lrsvo {
 namespace {
 
 template <int DI, int DL, int DJ>
-void subtractProduct(const double* y, const double* w, double* s, int ld, int di, int dl, int dj) {
+[[gnu::always_inline]] inline void subtractProduct(const double* y, const double* w, double* s, int ld, int di, int dl,
+                                                   int dj) {
   Eigen::Map<const Eigen::Matrix<double, DI, DL>> ym(y, di, dl);
   Eigen::Map<const Eigen::Matrix<double, DJ, DL>> wm(w, dj, dl);
   Eigen::Map<Eigen::Matrix<double, DI, DJ>, 0, Eigen::OuterStride<>> sm(s, di, dj, Eigen::OuterStride<>(ld));
@@ -49,10 +50,12 @@ std::vector<int> balancedRanges(const std::vector<double>& work, int parts) {
 
 }  // namespace
 
-template <int DL>
+template <int DL, int DF>
 void SchurSolver::eliminatePoint(const BlockSystem& system, const Eigen::VectorXd& rhs, int l, int first, int last,
                                  Eigen::VectorXd& reducedRhs, double* y) const {
-  using Coupling = Eigen::Matrix<double, Eigen::Dynamic, DL>;
+  // DF: the dimension of every free vertex when all are alike (cameras of 9,
+  // poses of 6), so that the products below are of fixed size.
+  using Coupling = Eigen::Matrix<double, DF, DL>;
   const auto& blocks = system.blocks();
   const std::span<const int> couplings = marginalCouplings(system, l);
   const auto rowBefore = [&](int coupling, int row) { return blocks[coupling].row < row; };
@@ -61,12 +64,12 @@ void SchurSolver::eliminatePoint(const BlockSystem& system, const Eigen::VectorX
   if (begin == end) return;
   const int v = system.freeCount() + l, dl = system.dim(v);
   const Eigen::Map<const Eigen::Matrix<double, DL, DL>> vInverse(vInverses_.inverse(l), dl, dl);
-  const auto rl = rhs.segment(system.offset(v), dl);
+  const Eigen::Matrix<double, DL, 1> rl = rhs.segment(system.offset(v), dl);
   for (auto a = begin; a != end; ++a) {
     const int i = blocks[*a].row, di = system.dim(i);
     Eigen::Map<Coupling> ym(y, di, dl);
     ym.noalias() = Eigen::Map<const Coupling>(system.values(blocks[*a]), di, dl) * vInverse;
-    reducedRhs.segment(system.offset(i), di).noalias() -= ym * rl;
+    Eigen::Map<Eigen::Matrix<double, DF, 1>>(reducedRhs.data() + system.offset(i), di).noalias() -= ym * rl;
     // The rows j of the couplings from a on ascend, as do row i's columns of
     // S: each is found from the one before.
     auto column = columns_.begin() + static_cast<std::ptrdiff_t>(rowStart_[i]);
@@ -76,8 +79,10 @@ void SchurSolver::eliminatePoint(const BlockSystem& system, const Eigen::VectorX
       const int dj = system.dim(w.row);
       column = std::lower_bound(column, rowEnd, w.row);
       const SymmetricBackend::BlockRef target = targets_[column - columns_.begin()];
-      const Kernel kernel = selectKernel<DL>(di, dj);
-      kernel(y, system.values(w), target.data, target.ld, di, dl, dj);
+      if constexpr (DF != Eigen::Dynamic)
+        subtractProduct<DF, DL, DF>(y, system.values(w), target.data, target.ld, di, dl, dj);
+      else
+        selectKernel<DL>(di, dj)(y, system.values(w), target.data, target.ld, di, dl, dj);
     }
   }
 }
@@ -124,6 +129,9 @@ void SchurSolver::analyze(const BlockSystem& system) {
     for (int k : system.rowBlocks(i))
       if (blocks[k].col < freeCount) rowCopies_[i].push_back({k, reducedBlock(i, blocks[k].col)});
 
+  freeDim_ = freeCount > 0 ? system.dim(0) : 0;
+  for (int i = 0; i < freeCount; ++i)
+    if (system.dim(i) != freeDim_) freeDim_ = 0;
   maxCouplingSize_ = 0;
   for (const auto& block : blocks)
     if (block.row < freeCount && block.col >= freeCount)
@@ -165,11 +173,16 @@ void SchurSolver::eliminate(const BlockSystem& system, const Eigen::VectorXd& rh
                             Eigen::VectorXd& reducedRhs) const {
   const int freeCount = system.freeCount();
   std::vector<double> y(maxCouplingSize_);
+  constexpr int X = Eigen::Dynamic;
   for (int l = 0; l < system.blockCount() - freeCount; ++l) {
-    if (system.dim(freeCount + l) == 3)
-      eliminatePoint<3>(system, rhs, l, first, last, reducedRhs, y.data());
+    if (system.dim(freeCount + l) != 3)
+      eliminatePoint<X, X>(system, rhs, l, first, last, reducedRhs, y.data());
+    else if (freeDim_ == 9)
+      eliminatePoint<3, 9>(system, rhs, l, first, last, reducedRhs, y.data());
+    else if (freeDim_ == 6)
+      eliminatePoint<3, 6>(system, rhs, l, first, last, reducedRhs, y.data());
     else
-      eliminatePoint<Eigen::Dynamic>(system, rhs, l, first, last, reducedRhs, y.data());
+      eliminatePoint<3, X>(system, rhs, l, first, last, reducedRhs, y.data());
   }
 }
 

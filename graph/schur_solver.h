@@ -33,7 +33,6 @@ class SchurSolver : public LinearSolver {
   int reducedBlockCount() const { return static_cast<int>(columns_.size()); }
 
  private:
-  using Kernel = void (*)(const double* y, const double* w, double* s, int ld, int di, int dl, int dj);
   struct Copy {  // S[target] += H[source] for free-free blocks
     int source;
     int target;
@@ -49,7 +48,7 @@ class SchurSolver : public LinearSolver {
   // does not depend on the thread count).
   void eliminate(const BlockSystem& system, const Eigen::VectorXd& rhs, int first, int last,
                  Eigen::VectorXd& reducedRhs) const;
-  template <int DL>
+  template <int DL, int DF>
   void eliminatePoint(const BlockSystem& system, const Eigen::VectorXd& rhs, int l, int first, int last,
                       Eigen::VectorXd& reducedRhs, double* y) const;
   // Backend block index of S(i, j), a block of the pattern.
@@ -65,6 +64,7 @@ class SchurSolver : public LinearSolver {
   std::vector<std::vector<Copy>> rowCopies_;
   std::vector<double> rowWork_;      // per free row i: its updates and blocks, its share of the work
   std::size_t maxCouplingSize_ = 0;  // the largest W_il's entry count
+  int freeDim_ = 0;                  // every free vertex's dimension when they agree, else 0
   MarginalBlockInverses vInverses_;
 };
 
