@@ -39,9 +39,10 @@ class ImplicitSchurComplement {
   bool invertDiagonalBlocks(const BlockSystem& system, bool withCouplings, int threads);
   // y = D^-1 x with the blocks of the last invertDiagonalBlocks().
   void applyDiagonalInverse(const BlockSystem& system, const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
-  // Fills x's marginalised entries from its free ones (x has the system's size).
-  void backSubstitute(const BlockSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) const {
-    vInverses_.backSubstitute(system, rhs, x, threads);
+  // The whole step from its free part (MarginalBlockInverses::backSubstitute).
+  bool backSubstitute(const BlockSystem& system, const Eigen::VectorXd& rhs, const Eigen::VectorXd& xFree,
+                      Eigen::VectorXd& x, int threads) const {
+    return vInverses_.backSubstitute(system, rhs, xFree, x, threads);
   }
 
  private:

@@ -63,8 +63,10 @@ void MarginalBlockInverses::backSubstitute(const BlockSystem& system, const Eige
       Eigen::Map<const Eigen::Matrix<double, DL, DL>>(values_.data() + offsets_[l], dl, dl) * r;
 }
 
-void MarginalBlockInverses::backSubstitute(const BlockSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd& x,
-                                           int threads) const {
+bool MarginalBlockInverses::backSubstitute(const BlockSystem& system, const Eigen::VectorXd& rhs,
+                                           const Eigen::VectorXd& xFree, Eigen::VectorXd& x, int threads) const {
+  x.resize(system.scalarCount());
+  x.head(xFree.size()) = xFree;
   const int freeCount = system.freeCount();
   parallelFor(0, system.blockCount() - freeCount, threads, [&](int l) {
     if (system.dim(freeCount + l) == 3)
@@ -72,6 +74,7 @@ void MarginalBlockInverses::backSubstitute(const BlockSystem& system, const Eige
     else
       backSubstitute<Eigen::Dynamic>(system, rhs, l, x);
   });
+  return x.allFinite();
 }
 
 }  // namespace lrsvo

@@ -32,8 +32,10 @@ class MarginalBlockInverses {
   bool compute(const BlockSystem& system, int threads);
   // V_l^-1, column-major, dim x dim.
   const double* inverse(int l) const { return values_.data() + offsets_[l]; }
-  // Fills x's marginalised entries from its free ones (x has the system's size).
-  void backSubstitute(const BlockSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) const;
+  // The whole step x from its free part xFree: x's marginalised entries by
+  // back-substitution. False when x is not finite.
+  bool backSubstitute(const BlockSystem& system, const Eigen::VectorXd& rhs, const Eigen::VectorXd& xFree,
+                      Eigen::VectorXd& x, int threads) const;
 
  private:
   template <int DL>

@@ -40,12 +40,10 @@ bool SchurPcgSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs
   }
   const double iterateSeconds = phase.lap();
 
-  x.resize(system.scalarCount());
-  x.head(xa.size()) = xa;
-  schur_.backSubstitute(system, rhs, x, threads);
+  const bool finite = schur_.backSubstitute(system, rhs, xa, x, threads);
   times_.schurSeconds += prepareSeconds + phase.seconds();
   times_.factorizeSeconds += iterateSeconds;
-  return x.allFinite();
+  return finite;
 }
 
 }  // namespace lrsvo

@@ -44,14 +44,10 @@ bool SchurPowerSeriesSolver::solve(const BlockSystem& system, const Eigen::Vecto
   }
   const double seriesSeconds = phase.lap();
 
-  if (!xa.allFinite()) return false;
-
-  x.resize(system.scalarCount());
-  x.head(xa.size()) = xa;
-  schur_.backSubstitute(system, rhs, x, threads);
+  const bool finite = schur_.backSubstitute(system, rhs, xa, x, threads);
   times_.schurSeconds += prepareSeconds + phase.seconds();
   times_.factorizeSeconds += seriesSeconds;
-  return x.allFinite();
+  return finite;
 }
 
 }  // namespace lrsvo

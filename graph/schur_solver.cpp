@@ -211,12 +211,10 @@ bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, E
   const double solveSeconds = phase.lap();
   if (!ok) return false;
 
-  x.resize(system.scalarCount());
-  x.head(xFree.size()) = xFree;
-  vInverses_.backSubstitute(system, rhs, x, threads);
+  const bool finite = vInverses_.backSubstitute(system, rhs, xFree, x, threads);
   times_.schurSeconds += reduceSeconds + phase.seconds();
   times_.factorizeSeconds += solveSeconds;
-  return x.allFinite();
+  return finite;
 }
 
 }  // namespace lrsvo
