@@ -46,6 +46,7 @@ double smallestEigenvalue(const Eigen::MatrixXd& m) {
   return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m).eigenvalues().minCoeff();
 }
 
+// The system refers to the graph's vertices and edges: the graph must outlive it.
 BlockSystem filledSystem(const Graph& graph, double relativeShift) {
   BlockSystem system(graph, /*schurOrdering=*/true);
   system.fill(1);
@@ -113,7 +114,8 @@ TEST(IterativeSchur, ConjugateGradientsReachTheDenseStepWithinTheirBound) {
 TEST(IterativeSchur, PowerSeriesReachesTheDenseStepWithinItsTruncationBound) {
   for (std::uint64_t seed : {1, 2, 3}) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    const BlockSystem system = filledSystem(balProblem(seed), 1e-3);
+    const Graph graph = balProblem(seed);
+    const BlockSystem system = filledSystem(graph, 1e-3);
     const DenseReference d = denseReference(system);
     const int a = system.freeScalarCount();
     Eigen::MatrixXd blockDiagonal = Eigen::MatrixXd::Zero(a, a);
@@ -175,7 +177,8 @@ TEST(IterativeSchur, StepsAreTheSameForAnyThreadCount) {
 }
 
 TEST(IterativeSchur, PowerSeriesRefusesFreeVerticesCoupledByAnEdge) {
-  const BlockSystem system = filledSystem(posesWithASharedScale(1), 1e-3);
+  const Graph graph = posesWithASharedScale(1);
+  const BlockSystem system = filledSystem(graph, 1e-3);
   SchurPowerSeriesSolver solver;
   try {
     solver.analyze(system);
