@@ -27,6 +27,7 @@ struct GraphCommandOptions {
   int maxIterations = SolverOptions{}.maxIterations;
   std::string json;
   std::string out;
+  bool geodesicAcceleration = false;
   bool verbose = false;
 };
 
@@ -69,6 +70,7 @@ void run(GraphCommandOptions& o) {
   solverOptions.threads = o.threads;
   solverOptions.maxIterations = o.maxIterations;
   solverOptions.verbose = o.verbose;
+  solverOptions.lm.geodesicAcceleration = o.geodesicAcceleration;
   const Optimizer optimizer(solverOptions);
 
   Graph graph = loadOrGenerate(o);
@@ -118,6 +120,8 @@ void addGraphCommand(CLI::App& app) {
   command->add_option("--out", options->out, "Write the optimised graph as a g2o file (17 significant digits)");
   command->add_option("--json", options->json, "Write the solver summary as JSON to this file");
   command->add_flag("--no-solve", options->noSolve, "Only read (or generate) and write the graph, do not optimise");
+  command->add_flag("--geodesic-acceleration", options->geodesicAcceleration,
+                    "Correct each Levenberg-Marquardt step by the residuals' curvature along it");
   command->add_flag("--verbose", options->verbose, "Print one line per iteration (stderr)");
 
   CLI::Option_group* generator = command->add_option_group("Generator", "Generate a graph instead of reading FILE");

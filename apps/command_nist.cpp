@@ -21,6 +21,7 @@ struct NistCommandOptions {
   std::string jacobians = "autodiff";
   int maxIterations = nistSolverOptions().maxIterations;
   std::string json;
+  bool geodesicAcceleration = false;
   bool verbose = false;
 };
 
@@ -29,6 +30,7 @@ NistSolveOptions solveOptions(const NistCommandOptions& o) {
   options.solver.setName(o.solver);
   options.solver.maxIterations = o.maxIterations;
   options.solver.verbose = o.verbose;
+  options.solver.lm.geodesicAcceleration = o.geodesicAcceleration;
   if (o.jacobians != "autodiff") {
     options.jacobians = RegressionJacobians::kNumeric;
     options.numeric.method = o.jacobians == "forward"   ? NumericDifference::kForward
@@ -41,8 +43,9 @@ NistSolveOptions solveOptions(const NistCommandOptions& o) {
 void run(const NistCommandOptions& o) {
   const NistSolveOptions options = solveOptions(o);
   const std::vector<std::string> files = nistProblemFiles(o.directory);
-  std::printf("NIST StRD nonlinear regression: %zu problems in %s, solver %s, %s Jacobians\n", files.size(),
-              o.directory.c_str(), options.solver.name().c_str(), o.jacobians.c_str());
+  std::printf("NIST StRD nonlinear regression: %zu problems in %s, solver %s%s, %s Jacobians\n", files.size(),
+              o.directory.c_str(), options.solver.name().c_str(),
+              options.solver.lm.geodesicAcceleration ? " with geodesic acceleration" : "", o.jacobians.c_str());
   std::printf("%-9s %5s %7s %6s %10s %14s %14s  %s\n", "problem", "start", "digits", "solved", "iterations", "RSS",
               "certified RSS", "termination");
   nlohmann::json rows = nlohmann::json::array();
@@ -79,6 +82,7 @@ void run(const NistCommandOptions& o) {
     std::ofstream out(o.json);
     out << nlohmann::json{{"solver", options.solver.name()},
                           {"jacobians", o.jacobians},
+                          {"geodesic_acceleration", options.solver.lm.geodesicAcceleration},
                           {"solved", solved},
                           {"solves", solves},
                           {"mean_digits", meanDigits},
@@ -98,7 +102,8 @@ void addNistCommand(CLI::App& app) {
       "smallest over a problem's parameters, capped at 11 (the certified values' own precision);\n"
       "a solve counts as solved at 4 digits or more. Examples:\n"
       "  lrsvo nist ../shared/data/nist\n"
-      "  lrsvo nist ../shared/data/nist --jacobians central --json nist.json");
+      "  lrsvo nist ../shared/data/nist --jacobians central --json nist.json\n"
+      "  lrsvo nist ../shared/data/nist --geodesic-acceleration");
   command->add_option("directory", options->directory, "Folder of NIST StRD .dat files")->required();
   command->add_option("--solver", options->solver, "Solver <algorithm>_<linear solver>, see `lrsvo solvers`")
       ->capture_default_str();
@@ -110,6 +115,8 @@ void addNistCommand(CLI::App& app) {
   command->add_option("--max-iterations", options->maxIterations, "Iteration cap per solve")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  command->add_flag("--geodesic-acceleration", options->geodesicAcceleration,
+                    "Correct each Levenberg-Marquardt step by the residuals' curvature along it");
   command->add_option("--json", options->json, "Write every solve and the totals as JSON to this file");
   command->add_flag("--verbose", options->verbose, "Print one line per iteration (stderr)");
   command->callback([options] { run(*options); });

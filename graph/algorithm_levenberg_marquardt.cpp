@@ -11,7 +11,8 @@ namespace {
 // Levenberg-Marquardt with Nielsen's lambda update (as Ceres' trust region):
 // a step is taken only when it lowers the cost by a relative gain above
 // LevenbergMarquardtOptions::minRelativeDecrease; otherwise the estimates are
-// restored and lambda grows geometrically.
+// restored and lambda grows geometrically. With geodesic acceleration a step
+// whose second-order correction is too large counts as rejected.
 class LevenbergMarquardt : public OptimizationAlgorithm {
  protected:
   void begin(OptimizationContext& context) override {
@@ -49,6 +50,8 @@ class LevenbergMarquardt : public OptimizationAlgorithm {
       context.summary().termination = Termination::kParameterTolerance;
       return Step::kStop;
     }
+    if (lm.geodesicAcceleration && !context.accelerateStep(shift_, lm.geodesicStep, lm.maxAccelerationRatio, dx_))
+      return Step::kRejected;
     const double predicted = context.predictedDecrease(shift_, dx_);
     context.applyStep(dx_);
     trialCost = context.cost();

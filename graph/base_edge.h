@@ -115,10 +115,18 @@ class BaseEdge : public Edge {
     const double rho = robustify(whitenedResidual_.squaredNorm(), &weight);
     // Fold sqrt(rho') and the square-root information into residual and
     // Jacobians once, so each block is a plain J_a^T J_b.
-    const double scale = std::sqrt(weight);
-    whitenedResidual_ *= scale;
-    whitenJacobians(scale, std::make_index_sequence<kVertexCount>{});
+    kernelScale_ = std::sqrt(weight);
+    whitenedResidual_ *= kernelScale_;
+    whitenJacobians(kernelScale_, std::make_index_sequence<kVertexCount>{});
     return 0.5 * rho;
+  }
+
+  void addSecondDirectionalGradient(double h, const double* const* steps, double* const* gradients) const override {
+    Residual moved;
+    computeResidual(moved);
+    const Residual alongStep = jacobianTimes(steps, std::make_index_sequence<kVertexCount>{});
+    const Residual second = (2.0 / h) * ((kernelScale_ * whiten(moved) - whitenedResidual_) / h - alongStep);
+    addJacobianTransposeTimes(second, gradients, std::make_index_sequence<kVertexCount>{});
   }
 
   void addHessianBlock(int a, int b, double* block, int ld) const final { kBlockTable[a][b](*this, block, ld); }
@@ -182,6 +190,26 @@ class BaseEdge : public Edge {
       ((std::get<K>(jacobians_) *= scale), ...);
     else
       ((std::get<K>(jacobians_) = scale * sqrtInformation_ * std::get<K>(jacobians_)), ...);
+  }
+
+  // J v from each vertex's part of v (null: no block, no term).
+  template <std::size_t... K>
+  Residual jacobianTimes(const double* const* steps, std::index_sequence<K...>) const {
+    Residual product = Residual::Zero();
+    ((steps[K]
+          ? void(product.noalias() += std::get<K>(jacobians_) *
+                                      Eigen::Map<const Eigen::Matrix<double, VertexType<K>::kDimension, 1>>(steps[K]))
+          : void()),
+     ...);
+    return product;
+  }
+
+  template <std::size_t... K>
+  void addJacobianTransposeTimes(const Residual& w, double* const* gradients, std::index_sequence<K...>) const {
+    ((gradients[K] ? void(Eigen::Map<Eigen::Matrix<double, VertexType<K>::kDimension, 1>>(gradients[K]).noalias() +=
+                          std::get<K>(jacobians_).transpose() * w)
+                   : void()),
+     ...);
   }
 
   template <std::size_t... K>
@@ -264,6 +292,7 @@ class BaseEdge : public Edge {
   std::shared_ptr<RobustKernel> kernel_;
   std::tuple<Eigen::Matrix<double, R, Vs::kDimension>...> jacobians_;
   Residual whitenedResidual_ = Residual::Zero();
+  double kernelScale_ = 1.0;  // sqrt(rho') at the last linearisation
 };
 
 }  // namespace lrsvo

@@ -159,6 +159,7 @@ double BlockSystem::fill(int threads) {
     for (int k : colBlocks(column)) fillBlock(k);
   });
 
+  heldScalars_.clear();
   double total = 0.0;
   for (double c : costs) total += c;
   return total;
@@ -214,6 +215,7 @@ void BlockSystem::holdCoordinate(int block, int coordinate) {
   values(blocks_[diagonalBlock(block)])[coordinate * d + coordinate] = 1.0;
   diagonal_[offsets_[block] + coordinate] = 1.0;
   gradient_[offsets_[block] + coordinate] = 0.0;
+  heldScalars_.push_back(offsets_[block] + coordinate);
 }
 
 Eigen::VectorXd BlockSystem::multiply(const Eigen::VectorXd& x) const {
@@ -227,6 +229,28 @@ Eigen::VectorXd BlockSystem::multiply(const Eigen::VectorXd& x) const {
                                      rows, cols, 1.0);
   }
   return y;
+}
+
+Eigen::VectorXd BlockSystem::secondDirectionalGradient(const Eigen::VectorXd& dx, double h) {
+  saveEstimates();
+  applyStep(h * dx);
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(scalarCount_);
+  std::vector<const double*> steps;
+  std::vector<double*> gradients;
+  for (const Edge* edge : edges_) {
+    steps.assign(edge->vertexCount(), nullptr);
+    gradients.assign(edge->vertexCount(), nullptr);
+    for (int k = 0; k < edge->vertexCount(); ++k) {
+      const int block = blockOf(edge->vertex(k));
+      if (block < 0) continue;
+      steps[k] = dx.data() + offsets_[block];
+      gradients[k] = sum.data() + offsets_[block];
+    }
+    edge->addSecondDirectionalGradient(h, steps.data(), gradients.data());
+  }
+  restoreEstimates();
+  for (int scalar : heldScalars_) sum[scalar] = 0.0;
+  return sum;
 }
 
 void BlockSystem::applyStep(const Eigen::VectorXd& dx) {

@@ -69,6 +69,11 @@ class BlockSystem {
   void holdCoordinate(int block, int coordinate);
   // y = H x with the current (possibly shifted) blocks.
   Eigen::VectorXd multiply(const Eigen::VectorXd& x) const;
+  // The right-hand side of geodesic acceleration: the sum over edges of
+  // J_e^T r''_e, r''_e the second derivative of edge e's residual along dx by
+  // finite differences with step h (Edge::addSecondDirectionalGradient), zero
+  // at held coordinates. After fill(); the estimates are left as they were.
+  Eigen::VectorXd secondDirectionalGradient(const Eigen::VectorXd& dx, double h);
 
   // Applies x <- x [+] dx to every active vertex.
   void applyStep(const Eigen::VectorXd& dx);
@@ -105,6 +110,7 @@ class BlockSystem {
   LargeArray<Contribution> contributions_;
   LargeArray<double> values_;
   Eigen::VectorXd gradient_, diagonal_;
+  std::vector<int> heldScalars_;  // since the last fill()
   std::vector<double> savedEstimates_;
   std::vector<std::size_t> estimateOffsets_;
 };

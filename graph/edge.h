@@ -39,6 +39,15 @@ class Edge {
   virtual void addHessianBlock(int a, int b, double* block, int ld) const = 0;
   // After linearize(): gradient += dF / d vertex a.
   virtual void addGradient(int a, double* gradient) const = 0;
+  // Geodesic acceleration (docs/autodiff.md): after linearize() at x, with
+  // every active vertex moved on to x [+] h v, adds J_k^T r'' to gradients[k]
+  // for each vertex k, where r'' = (2/h) ((r(x [+] h v) - r(x)) / h - J v) is
+  // the second derivative of the residual along v, whitened and weighted as in
+  // the blocks. steps[k] is vertex k's part of v; both pointers are null for a
+  // vertex without a block. A cost edge adds nothing: its curvature is in H.
+  virtual void addSecondDirectionalGradient(double h, const double* const* steps, double* const* gradients) const {
+    (void)h, (void)steps, (void)gradients;
+  }
   // Type-specific data in graph files (measurement, information, kernel, ...).
   virtual void writeData(std::ostream& out) const = 0;
   // Throws lrsvo::Error on missing or invalid values.

@@ -28,8 +28,14 @@ class OptimizationContext {
   // Solves (H + diag(shift)) dx = -g, then lets the constraints shape dx;
   // false when the system is not positive definite.
   bool solveStep(const Eigen::VectorXd& shift, Eigen::VectorXd& dx);
+  // Geodesic acceleration of the step dx of the last solveStep(): solves
+  // (H + diag(shift)) a = -sum_e J_e^T r''_e (BlockSystem::secondDirectionalGradient)
+  // and sets dx += a / 2. False, dx unchanged, when that system fails or
+  // 2 |a| > maxRatio |dx| in the metric diag(shift). A step the constraints
+  // shaped is left as it is (true).
+  bool accelerateStep(const Eigen::VectorXd& shift, double h, double maxRatio, Eigen::VectorXd& dx);
   // Decrease of the quadratic model, -g^T dx - 1/2 dx^T H dx, for the step
-  // of the last solveStep().
+  // of the last solveStep() (or accelerateStep()).
   double predictedDecrease(const Eigen::VectorXd& shift, const Eigen::VectorXd& dx) const;
   // Applies x <- x [+] dx to the active vertices (estimates saved first, so
   // rejectStep() restores them).
@@ -53,6 +59,7 @@ class OptimizationContext {
   Stopwatch stopwatch_;  // since the context was made
   double lastRecordSeconds_ = 0.0;
   bool stepSolvesTheSystem_ = true;
+  bool stepAdjusted_ = false;  // the constraints shaped the last step
 };
 
 // The head of a solve's summary, shared by every minimiser (the optimiser's

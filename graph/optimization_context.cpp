@@ -25,9 +25,28 @@ bool OptimizationContext::solveStep(const Eigen::VectorXd& shift, Eigen::VectorX
   summary_.factorizeSeconds = solver_.times().factorizeSeconds;
   // A step the constraints adjusted, or an iterative solver's, does not solve
   // (H + D) dx = -g exactly.
-  const bool adjusted = ok && constraints_.adjustStep(system_, dx);
-  stepSolvesTheSystem_ = ok && !adjusted && solver_.exactSteps();
+  stepAdjusted_ = ok && constraints_.adjustStep(system_, dx);
+  stepSolvesTheSystem_ = ok && !stepAdjusted_ && solver_.exactSteps();
   return ok;
+}
+
+bool OptimizationContext::accelerateStep(const Eigen::VectorXd& shift, double h, double maxRatio, Eigen::VectorXd& dx) {
+  if (stepAdjusted_) return true;
+  const Stopwatch start;
+  const Eigen::VectorXd rhs = -system_.secondDirectionalGradient(dx, h);
+  summary_.costSeconds += start.seconds();
+  Eigen::VectorXd acceleration;
+  const bool ok = solver_.solve(system_, rhs, acceleration, options_.threads);
+  summary_.schurSeconds = solver_.times().schurSeconds;
+  summary_.factorizeSeconds = solver_.times().factorizeSeconds;
+  if (!ok || !acceleration.allFinite()) return false;
+  // The damping's metric: diag(H) clamped in multiplicative damping (lambda cancels), plain in additive.
+  const double velocity = dx.dot(shift.cwiseProduct(dx));
+  const double accelerationNorm = acceleration.dot(shift.cwiseProduct(acceleration));
+  if (!(4.0 * accelerationNorm <= maxRatio * maxRatio * velocity)) return false;
+  dx += 0.5 * acceleration;
+  stepSolvesTheSystem_ = false;
+  return true;
 }
 
 double OptimizationContext::predictedDecrease(const Eigen::VectorXd& shift, const Eigen::VectorXd& dx) const {

@@ -35,6 +35,18 @@ struct LevenbergMarquardtOptions {
   // minDiagonal (1 + |J_i|)^2, which follows the parameter's own units, where
   // the plain floor is absolute. Off by default; the NIST regression turns it on.
   bool jacobiScaledDiagonal = false;
+  // Geodesic acceleration (Transtrum and Sethna): each step v is corrected by
+  // a/2, where a solves the damped system for the residuals' second derivative
+  // along v (finite differences with step geodesicStep); a step with
+  // 2 |a| > maxAccelerationRatio |v| (norms in the damping's metric) is
+  // rejected. Steps then follow the curved valleys plain steps leave, which
+  // keeps a parameter from running off onto a plateau (NIST's BoxBOD), but
+  // leads elsewhere too (docs/autodiff.md); it costs one more residual
+  // evaluation and solve per step. Steps a constraint method shaped are taken
+  // unaccelerated. Off by default.
+  bool geodesicAcceleration = false;
+  double geodesicStep = 0.1;
+  double maxAccelerationRatio = 0.75;
 };
 
 struct SolverOptions {

@@ -153,8 +153,8 @@ using BoundTuple = std::tuple<int, int, double, double>;
 
 SolverSummary optimize(Graph& graph, const std::string& solver, int maxIterations, int threads,
                        double functionTolerance, double gradientTolerance, double parameterTolerance, double maxSeconds,
-                       const std::string& damping, bool verbose, const std::vector<BoundTuple>& bounds,
-                       const std::string& constraint, bool projectStart) {
+                       const std::string& damping, bool geodesicAcceleration, bool verbose,
+                       const std::vector<BoundTuple>& bounds, const std::string& constraint, bool projectStart) {
   SolverOptions options = SolverOptions::fromName(solver);
   options.maxIterations = maxIterations;
   options.threads = threads;
@@ -163,6 +163,7 @@ SolverSummary optimize(Graph& graph, const std::string& solver, int maxIteration
   options.parameterTolerance = parameterTolerance;
   options.maxSeconds = maxSeconds;
   options.lm.damping = dampingFromName(damping);
+  options.lm.geodesicAcceleration = geodesicAcceleration;
   options.verbose = verbose;
   if (bounds.empty()) {
     const Optimizer optimizer(options);
@@ -272,13 +273,16 @@ void bindGraph(py::module_& m) {
            py::arg("gradient_tolerance") = SolverOptions{}.gradientTolerance,
            py::arg("parameter_tolerance") = SolverOptions{}.parameterTolerance,
            py::arg("max_seconds") = SolverOptions{}.maxSeconds, py::arg("damping") = "multiplicative",
-           py::arg("verbose") = false, py::arg("bounds") = std::vector<BoundTuple>(),
-           py::arg("constraint") = "log_barrier", py::arg("project_start") = false,
+           py::arg("geodesic_acceleration") = false, py::arg("verbose") = false,
+           py::arg("bounds") = std::vector<BoundTuple>(), py::arg("constraint") = "log_barrier",
+           py::arg("project_start") = false,
            "Minimises the cost over the free vertices in place and returns the SolverSummary. solver is "
            "'<algorithm>_<linear solver>' (solvers() lists them). bounds: (vertex id, parameter index, lower, "
            "upper) on Euclidean vertices, kept by the constraint method named (constraint_methods(), with "
-           "settings as 'log_barrier:mu=0.01'); a start outside them raises unless project_start. The GIL is "
-           "released while it runs.")
+           "settings as 'log_barrier:mu=0.01'); a start outside them raises unless project_start. "
+           "geodesic_acceleration corrects each Levenberg-Marquardt step by the residuals' curvature along it "
+           "(one more residual evaluation and solve per step; for hard small problems). The GIL is released "
+           "while it runs.")
       .def("save", &saveGraphTo, py::arg("path"), py::arg("format") = "lrsvo",
            "Writes lrsvo's graph file ('lrsvo', exact round trip) or a g2o file ('g2o': SE2/SE3 pose graphs).");
 

@@ -91,10 +91,21 @@ double PythonResidualEdge::linearize() {
   double weight = 1.0;
   whitenedResidual_ = whiten(r0);
   const double rho = robustify(whitenedResidual_.squaredNorm(), &weight);
-  const double scale = std::sqrt(weight);
-  whitenedResidual_ *= scale;
-  for (Eigen::MatrixXd& jacobian : jacobians_) jacobian = scale * sqrtInformation_ * jacobian;
+  kernelScale_ = std::sqrt(weight);
+  whitenedResidual_ *= kernelScale_;
+  for (Eigen::MatrixXd& jacobian : jacobians_) jacobian = kernelScale_ * sqrtInformation_ * jacobian;
   return 0.5 * rho;
+}
+
+void PythonResidualEdge::addSecondDirectionalGradient(double h, const double* const* steps,
+                                                      double* const* gradients) const {
+  Eigen::VectorXd alongStep = Eigen::VectorXd::Zero(dimension_);
+  for (std::size_t k = 0; k < vertices_.size(); ++k)
+    if (steps[k]) alongStep += jacobians_[k] * Eigen::Map<const Eigen::VectorXd>(steps[k], jacobians_[k].cols());
+  const Eigen::VectorXd second = (2.0 / h) * ((kernelScale_ * whiten(evaluate()) - whitenedResidual_) / h - alongStep);
+  for (std::size_t k = 0; k < vertices_.size(); ++k)
+    if (gradients[k])
+      Eigen::Map<Eigen::VectorXd>(gradients[k], jacobians_[k].cols()) += jacobians_[k].transpose() * second;
 }
 
 void PythonResidualEdge::addHessianBlock(int a, int b, double* block, int ld) const {

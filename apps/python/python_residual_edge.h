@@ -37,6 +37,7 @@ class __attribute__((visibility("hidden"))) PythonResidualEdge final : public Ed
   double linearize() override;
   void addHessianBlock(int a, int b, double* block, int ld) const override;
   void addGradient(int a, double* gradient) const override;
+  void addSecondDirectionalGradient(double h, const double* const* steps, double* const* gradients) const override;
   // A Python callable has no text form: graph files cannot hold this edge.
   void writeData(std::ostream& out) const override;
   void readData(std::istream& in) override;
@@ -54,6 +55,7 @@ class __attribute__((visibility("hidden"))) PythonResidualEdge final : public Ed
   // After linearize(): whitened, kernel-weighted residual and Jacobians.
   Eigen::VectorXd whitenedResidual_;
   std::vector<Eigen::MatrixXd> jacobians_;
+  double kernelScale_ = 1.0;  // sqrt(rho') at the last linearisation
 };
 
 }  // namespace lrsvo::python

@@ -108,7 +108,7 @@ TEST(NistProblem, AnUnknownProblemHasNoModel) { EXPECT_THROW(nistModelOf("Unknow
 // from both starts, with automatic differentiation and the default LM. One
 // solve is not reached and is held to what it reaches, so that a change that
 // loses or gains it shows here: BoxBOD from start 1 (Ceres does not solve it
-// either), stalled on a plateau.
+// either), stalled on a plateau; geodesic acceleration solves it (below).
 TEST(NistRegression, EveryProblemButOneIsSolvedFromBothStarts) {
   const NistSolveOptions options;
   int unsolved = 0;
@@ -141,6 +141,20 @@ TEST(NistRegression, Mgh10FromStartOneNeedsTheJacobiScaledDampingFloor) {
   options.solver.lm.jacobiScaledDiagonal = false;
   const NistSolve unscaled = solveNist(problem, 1, options);
   EXPECT_FALSE(unscaled.solved()) << unscaled.summary.briefReport();
+}
+
+// BoxBOD from start 1 (b = (1, 1)): plain steps run b2 off to where the model
+// is flat in it, b1 at the mean of y; geodesic acceleration's ratio test turns
+// those steps down and the solve reaches the certified values.
+TEST(NistRegression, BoxBodFromStartOneIsSolvedWithGeodesicAcceleration) {
+  const NistProblem problem = readNistProblem(kFolder + "/BoxBOD.dat");
+  NistSolveOptions options;
+  ASSERT_FALSE(options.solver.lm.geodesicAcceleration);
+  const NistSolve plain = solveNist(problem, 1, options);
+  EXPECT_FALSE(plain.solved()) << plain.summary.briefReport();
+  options.solver.lm.geodesicAcceleration = true;
+  const NistSolve accelerated = solveNist(problem, 1, options);
+  EXPECT_TRUE(accelerated.solved()) << accelerated.minDigits() << " digits, " << accelerated.summary.briefReport();
 }
 
 TEST(NistRegression, CorrectDigitsAreTheLogRelativeError) {

@@ -97,6 +97,27 @@ def test_a_python_residual_fits_a_curve():
     np.testing.assert_allclose(g.estimate(0), truth, rtol=1e-8)
 
 
+def test_geodesic_acceleration_solves_boxbod_from_its_first_start():
+    # NIST's BoxBOD, y = b1 (1 - exp(-b2 x)), from b = (1, 1): plain steps run b2 off to where
+    # the model is flat (b1 at the mean of y); accelerated steps reach the certified values.
+    xs = np.array([1.0, 2.0, 3.0, 5.0, 7.0, 10.0])
+    ys = np.array([109.0, 149.0, 149.0, 191.0, 213.0, 224.0])
+    certified = np.array([2.1380940889e02, 5.4723748542e-01])
+    estimates = {}
+    for accelerated in (False, True):
+        g = lrsvo.Graph()
+        g.add_vertex("VECTOR2", 0, [1.0, 1.0])
+        g.add_residual([0], lambda b: ys - b[0] * (1.0 - np.exp(-b[1] * xs)), dimension=len(xs))
+        summary = g.optimize("lm_dense", max_iterations=1000, function_tolerance=1e-15,
+                             parameter_tolerance=1e-15, geodesic_acceleration=accelerated)
+        estimates[accelerated] = (g.estimate(0), summary)
+    plain, summary = estimates[False]
+    assert abs(plain[0] - ys.mean()) < 1e-3 * ys.mean(), summary.full_report()
+    # Central differences (~1e-10 relative here) and the stopping tolerances leave far more than 4 digits.
+    accelerated, summary = estimates[True]
+    np.testing.assert_allclose(accelerated, certified, rtol=1e-4, err_msg=summary.full_report())
+
+
 def test_a_python_residual_matches_the_built_in_edge():
     # The same SE2 measurement as a built-in edge and as a Python residual: the same solution.
     def relative(xi, xj, z):

@@ -76,6 +76,7 @@ class Graph:
         parameter_tolerance: float = ...,
         max_seconds: float = ...,
         damping: str = ...,
+        geodesic_acceleration: bool = ...,
         verbose: bool = ...,
         bounds: Sequence[Tuple[int, int, float, float]] = ...,
         constraint: str = ...,
