@@ -12,12 +12,22 @@ namespace {
 // (CHOLMOD's own threshold for it, without the flops-per-entry condition).
 constexpr double kHeavyFill = 5.0;
 
+// The supernodal factorisation makes a few dense BLAS calls per supernode.
+// Below this many flops per supernode on average (a planar pose graph's
+// supernodes hold about three poses) the calls' overhead outweighs their
+// speed, and the simplicial factorisation, column by column, is faster
+// (docs/pose_graphs.md gives the crossover measured on the generated graphs).
+constexpr double kMinFlopsPerSupernode = 1e5;
+
 }  // namespace
 
 CholmodBackend::CholmodBackend(CholmodOrdering ordering) : ordering_(ordering) {
   cholmod_start(&common_);
   common_.print = 0;
   common_.supernodal = CHOLMOD_SUPERNODAL;
+  // A simplicial factor is LL' too, so a matrix that is not positive definite
+  // is reported by either kind (LDL' would factorise it).
+  common_.final_ll = 1;
 }
 
 CholmodBackend::~CholmodBackend() {
@@ -84,6 +94,25 @@ void CholmodBackend::analyze(const std::vector<int>& blockDims, const std::vecto
     for (int d : blockDims) upperEntries -= 0.5 * d * (d - 1);
     tryNestedDissection(upperEntries);
   }
+  chooseFactorizationKind();
+}
+
+void CholmodBackend::chooseFactorizationKind() {
+  if (!factor_->is_super || factor_->nsuper == 0) return;
+  if (factorizationFlops_ / static_cast<double>(factor_->nsuper) >= kMinFlopsPerSupernode) return;
+  // The same ordering, analysed for the simplicial factorisation.
+  const int methods = common_.nmethods;
+  const int ordering = common_.method[0].ordering;
+  common_.nmethods = 1;
+  common_.method[0].ordering = factor_->ordering;
+  common_.supernodal = CHOLMOD_SIMPLICIAL;
+  cholmod_factor* simplicial = cholmod_analyze(matrix_, &common_);
+  common_.nmethods = methods;
+  common_.method[0].ordering = ordering;
+  common_.supernodal = CHOLMOD_SUPERNODAL;
+  if (!simplicial) return;  // the supernodal analysis stands
+  cholmod_free_factor(&factor_, &common_);
+  factor_ = simplicial;
 }
 
 void CholmodBackend::tryNestedDissection(double matrixEntries) {

@@ -7,7 +7,8 @@
 namespace lrsvo {
 
 // The matrix held as CHOLMOD's compressed-column upper triangle and factorised
-// by its supernodal Cholesky. Blocks are written straight into the column
+// by its Cholesky LL': supernodal, or simplicial where the supernodes are too
+// small to pay for their dense kernels. Blocks are written straight into the column
 // storage: each block column has the same row pattern in all of its columns,
 // so a block is a column-major array whose leading dimension is that
 // column's length. Diagonal blocks are stored whole; CHOLMOD reads only
@@ -38,10 +39,15 @@ class CholmodBackend : public SymmetricBackend {
   // one factorisation with it, as CHOLMOD counts them.
   const char* orderingName() const;
   double factorizationFlops() const { return factorizationFlops_; }
+  // After analyze(): whether the factorisation is supernodal (else simplicial).
+  bool supernodal() const { return factor_ && factor_->is_super; }
 
  private:
   void release();
   void tryNestedDissection(double matrixEntries);
+  // Re-analyses for the simplicial factorisation when the supernodes average
+  // fewer than kMinFlopsPerSupernode flops.
+  void chooseFactorizationKind();
 
   CholmodOrdering ordering_;
   double factorizationFlops_ = 0.0;

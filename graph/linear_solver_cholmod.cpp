@@ -7,6 +7,6 @@ namespace lrsvo {
 void addCholmodSolver(Registry<LinearSolver>& registry) {
   registry.add(
       "cholmod", [] { return std::make_unique<FullSolver>(std::make_unique<CholmodBackend>()); },
-      "sparse supernodal Cholesky (CHOLMOD) of the whole system");
+      "sparse Cholesky (CHOLMOD, supernodal or simplicial) of the whole system");
 }
 }  // namespace lrsvo

@@ -7,6 +7,6 @@ namespace lrsvo {
 void addSchurCholmodSolver(Registry<LinearSolver>& registry) {
   registry.add(
       "schur_cholmod", [] { return std::make_unique<SchurSolver>(std::make_unique<CholmodBackend>()); },
-      "Schur complement on marginalised vertices, CHOLMOD supernodal Cholesky of the reduced system");
+      "Schur complement on marginalised vertices, CHOLMOD sparse Cholesky of the reduced system");
 }
 }  // namespace lrsvo

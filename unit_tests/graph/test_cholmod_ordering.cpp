@@ -1,6 +1,9 @@
-// The CHOLMOD back end's choice of ordering: METIS where the factor fills in
-// heavily (the lattices of pose graphs), never where it does not, and the same
-// solution whichever ordering is kept.
+// The CHOLMOD back end's choices: the ordering (METIS where the factor fills in
+// heavily, as in the lattices of pose graphs, never where it does not, and the
+// same solution whichever ordering is kept) and the factorisation's kind
+// (simplicial where supernodes are small, supernodal otherwise, both solving
+// the system and both reporting a matrix that is not positive definite).
+#include <limits>
 #include <random>
 #include <utility>
 #include <vector>
@@ -18,11 +21,11 @@ struct BlockPattern {
   std::vector<std::pair<int, int>> pairs;  // (row, col), row <= col, diagonals included
 };
 
-// A side x side lattice of 6-dimensional blocks, each coupled to its right and
-// lower neighbours: the structure of a planar pose graph.
-BlockPattern lattice(int side) {
+// A side x side lattice of blocks, each coupled to its right and lower
+// neighbours: the structure of a planar pose graph.
+BlockPattern lattice(int side, int dim = 6) {
   BlockPattern pattern;
-  pattern.dims.assign(side * side, 6);
+  pattern.dims.assign(side * side, dim);
   for (int r = 0; r < side; ++r)
     for (int c = 0; c < side; ++c) {
       const int i = r * side + c;
@@ -42,26 +45,40 @@ BlockPattern dense(int blocks) {
   return pattern;
 }
 
-// Fills the blocks with a strictly diagonally dominant matrix (10 I on the
-// diagonal, off-diagonal entries within +-0.1, at most 4 * 6 of them per row
-// in the lattice) and solves with a seeded right-hand side.
-Eigen::VectorXd fillAndSolve(CholmodBackend& backend, const BlockPattern& pattern) {
+struct FilledSystem {
+  Eigen::MatrixXd matrix;  // the whole symmetric matrix, as the blocks hold its upper triangle
+  Eigen::VectorXd rhs;
+};
+
+// Fills the blocks with a symmetric matrix with `diagonal` I on its diagonal
+// and off-diagonal entries within +-0.1 (strictly diagonally dominant for a
+// diagonal of 10: at most 4 * 6 of them per row in the lattice), and draws a
+// seeded right-hand side.
+FilledSystem fill(CholmodBackend& backend, const BlockPattern& pattern, double diagonal = 10.0) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> offDiagonal(-0.1, 0.1);
+  std::vector<int> offsets{0};
+  for (int d : pattern.dims) offsets.push_back(offsets.back() + d);
+  FilledSystem system{Eigen::MatrixXd::Zero(offsets.back(), offsets.back()), Eigen::VectorXd(offsets.back())};
   backend.setZero();
   for (int k = 0; k < static_cast<int>(pattern.pairs.size()); ++k) {
     const auto [row, col] = pattern.pairs[k];
     const SymmetricBackend::BlockRef block = backend.block(k);
     for (int c = 0; c < pattern.dims[col]; ++c)
-      for (int r = 0; r < pattern.dims[row]; ++r)
-        block.data[c * block.ld + r] = row == col ? (r == c ? 10.0 : 0.0) : offDiagonal(random);
+      for (int r = 0; r < pattern.dims[row]; ++r) {
+        const double value = row == col ? (r == c ? diagonal : 0.0) : offDiagonal(random);
+        block.data[c * block.ld + r] = value;
+        system.matrix(offsets[row] + r, offsets[col] + c) = system.matrix(offsets[col] + c, offsets[row] + r) = value;
+      }
   }
-  int size = 0;
-  for (int d : pattern.dims) size += d;
-  Eigen::VectorXd rhs(size);
-  for (int i = 0; i < size; ++i) rhs[i] = offDiagonal(random);
+  for (int i = 0; i < system.rhs.size(); ++i) system.rhs[i] = offDiagonal(random);
+  return system;
+}
+
+Eigen::VectorXd fillAndSolve(CholmodBackend& backend, const BlockPattern& pattern) {
+  const FilledSystem system = fill(backend, pattern);
   Eigen::VectorXd x;
-  EXPECT_TRUE(backend.solve(rhs, x));
+  EXPECT_TRUE(backend.solve(system.rhs, x));
   return x;
 }
 
@@ -86,6 +103,44 @@ TEST(CholmodOrdering, NoFillKeepsAmdWithoutTryingMetis) {
   CholmodBackend leastWork;
   leastWork.analyze(pattern.dims, pattern.pairs);
   EXPECT_STREQ(leastWork.orderingName(), "amd");
+}
+
+// An SE(2) pose graph's lattice of 3 x 3 blocks: supernodes of a few blocks,
+// factorised simplicially. A dense system of 120 unknowns: one supernode of
+// 120^3 / 3 = 5.8e5 flops, supernodal.
+TEST(CholmodFactorization, SmallSupernodesAreFactorisedSimplicially) {
+  const BlockPattern planar = lattice(30, 3), full = dense(20);
+  CholmodBackend planarBackend, fullBackend;
+  planarBackend.analyze(planar.dims, planar.pairs);
+  fullBackend.analyze(full.dims, full.pairs);
+  EXPECT_FALSE(planarBackend.supernodal());
+  EXPECT_TRUE(fullBackend.supernodal());
+}
+
+// Cholesky is backward stable: the residual is within c n eps |A| |x|, c a
+// small constant; the check allows c = 1 over the largest dimension here.
+TEST(CholmodFactorization, EitherKindSolvesTheSystem) {
+  for (const BlockPattern& pattern : {lattice(30, 3), dense(20)}) {
+    CholmodBackend backend;
+    backend.analyze(pattern.dims, pattern.pairs);
+    const FilledSystem system = fill(backend, pattern);
+    Eigen::VectorXd x;
+    ASSERT_TRUE(backend.solve(system.rhs, x)) << (backend.supernodal() ? "supernodal" : "simplicial");
+    const double n = static_cast<double>(system.rhs.size());
+    const double bound = n * std::numeric_limits<double>::epsilon() * system.matrix.norm() * x.norm();
+    EXPECT_LE((system.matrix * x - system.rhs).norm(), bound) << (backend.supernodal() ? "supernodal" : "simplicial");
+  }
+}
+
+// A diagonal of -1 makes the matrix indefinite: either kind reports it.
+TEST(CholmodFactorization, EitherKindReportsAMatrixThatIsNotPositiveDefinite) {
+  for (const BlockPattern& pattern : {lattice(30, 3), dense(20)}) {
+    CholmodBackend backend;
+    backend.analyze(pattern.dims, pattern.pairs);
+    const FilledSystem system = fill(backend, pattern, -1.0);
+    Eigen::VectorXd x;
+    EXPECT_FALSE(backend.solve(system.rhs, x)) << (backend.supernodal() ? "supernodal" : "simplicial");
+  }
 }
 
 }  // namespace
