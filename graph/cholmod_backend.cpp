@@ -16,7 +16,7 @@ constexpr double kHeavyFill = 5.0;
 // Below this many flops per supernode on average (a planar pose graph's
 // supernodes hold about three poses) the calls' overhead outweighs their
 // speed, and the simplicial factorisation, column by column, is faster
-// (docs/pose_graphs.md gives the crossover measured on the generated graphs).
+// (docs/pose_graphs.md: `lrsvo bench graph` on the generated graphs).
 constexpr double kMinFlopsPerSupernode = 1e5;
 
 }  // namespace
