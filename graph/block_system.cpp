@@ -65,7 +65,13 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
     int col;
     Contribution contribution;
   };
+  // At most every pair of each edge's vertices: reserved once, as growing
+  // the array would copy it and hold two copies at once.
+  std::size_t pairBound = 0;
+  for (const auto& edge : graph.edges())
+    pairBound += static_cast<std::size_t>(edge->vertexCount()) * (edge->vertexCount() + 1) / 2;
   LargeArray<Entry> entries;
+  entries.reserve(pairBound);
   std::vector<int> edgeBlocks;  // block index of each of an edge's vertices, -1 if inactive
   for (const auto& edgePtr : graph.edges()) {
     Edge* edge = edgePtr.get();
@@ -122,6 +128,10 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
   std::vector<std::size_t> next(contributionStart_.begin(), contributionStart_.end() - 1);
   for (std::size_t e = 0; e < entries.size(); ++e)
     contributions_[next[static_cast<std::size_t>(entryBlock[e])]++] = entries[e].contribution;
+  // Released before H's values are allocated, so the set-up's peak memory is
+  // the larger of the two, not their sum.
+  LargeArray<Entry>().swap(entries);
+  LargeArray<int>().swap(entryBlock);
 
   // Each row's blocks listed by column.
   rowBlockIds_.resize(colBlockIds_.size());

@@ -1,9 +1,13 @@
 // LargeArray (graph/large_array.h): arrays under 2 MiB from operator new,
-// larger ones in whole 2 MiB units aligned to 2 MiB; either way an ordinary
-// vector that keeps its values through growth and copies.
+// larger ones aligned to 2 MiB, resident only where used and returned to the
+// system when freed; either way an ordinary vector that keeps its values
+// through growth and copies.
 
 #include <cstdint>
+#include <fstream>
 #include <numeric>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +17,14 @@ namespace lrsvo::test {
 namespace {
 
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
+
+// The process' resident memory in bytes (Linux /proc), 0 where unknown.
+std::size_t residentBytes() {
+  std::ifstream statm("/proc/self/statm");
+  std::size_t total = 0, resident = 0;
+  if (!(statm >> total >> resident)) return 0;
+  return resident * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+}
 
 TEST(LargeArray, LargeArraysAreAlignedToWholeHugePages) {
   LargeArray<double> large(kHugePage / sizeof(double) + 1);
@@ -29,6 +41,23 @@ TEST(LargeArray, KeepsItsValuesThroughGrowthAcrossTheThresholdAndCopies) {
   ASSERT_EQ(copy.size(), static_cast<std::size_t>(count));
   for (int i = 0; i < count; i += 4099) EXPECT_EQ(copy[static_cast<std::size_t>(i)], i);
   EXPECT_EQ(copy.back(), count - 1);
+}
+
+// An array one page past 2 MiB, every byte written: the whole 2 MiB may be one
+// huge page, the page past it must be a small one, so it adds 2 MiB and a page
+// to the resident memory (a 2 MiB unit for the tail would add 4 MiB). 3 MiB
+// leaves room for the test's own allocations. Freed, all of it leaves.
+TEST(LargeArray, IsResidentOnlyWhereUsedAndLeavesWhenFreed) {
+  if (residentBytes() == 0) GTEST_SKIP() << "no /proc/self/statm";
+  const std::size_t page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+  const std::size_t before = residentBytes();
+  {
+    LargeArray<char> array(kHugePage + page, 1);
+    const std::size_t used = residentBytes();
+    EXPECT_GE(used, before + kHugePage);
+    EXPECT_LT(used, before + 3 * (kHugePage / 2));
+  }
+  EXPECT_LT(residentBytes(), before + kHugePage / 2);
 }
 
 }  // namespace
