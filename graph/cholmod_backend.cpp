@@ -97,19 +97,23 @@ void CholmodBackend::analyze(const std::vector<int>& blockDims, const std::vecto
   chooseFactorizationKind();
 }
 
+cholmod_factor* CholmodBackend::analyzeWith(int ordering, int kind) {
+  const int methods = common_.nmethods, defaultOrdering = common_.method[0].ordering, defaultKind = common_.supernodal;
+  common_.nmethods = 1;
+  common_.method[0].ordering = ordering;
+  common_.supernodal = kind;
+  cholmod_factor* factor = cholmod_analyze(matrix_, &common_);
+  common_.nmethods = methods;
+  common_.method[0].ordering = defaultOrdering;
+  common_.supernodal = defaultKind;
+  return factor;
+}
+
 void CholmodBackend::chooseFactorizationKind() {
   if (!factor_->is_super || factor_->nsuper == 0) return;
   if (factorizationFlops_ / static_cast<double>(factor_->nsuper) >= kMinFlopsPerSupernode) return;
   // The same ordering, analysed for the simplicial factorisation.
-  const int methods = common_.nmethods;
-  const int ordering = common_.method[0].ordering;
-  common_.nmethods = 1;
-  common_.method[0].ordering = factor_->ordering;
-  common_.supernodal = CHOLMOD_SIMPLICIAL;
-  cholmod_factor* simplicial = cholmod_analyze(matrix_, &common_);
-  common_.nmethods = methods;
-  common_.method[0].ordering = ordering;
-  common_.supernodal = CHOLMOD_SUPERNODAL;
+  cholmod_factor* simplicial = analyzeWith(factor_->ordering, CHOLMOD_SIMPLICIAL);
   if (!simplicial) return;  // the supernodal analysis stands
   cholmod_free_factor(&factor_, &common_);
   factor_ = simplicial;
@@ -117,13 +121,7 @@ void CholmodBackend::chooseFactorizationKind() {
 
 void CholmodBackend::tryNestedDissection(double matrixEntries) {
   if (factor_->ordering != CHOLMOD_AMD || common_.lnz < kHeavyFill * matrixEntries) return;
-  const int methods = common_.nmethods;
-  const int ordering = common_.method[0].ordering;
-  common_.nmethods = 1;
-  common_.method[0].ordering = CHOLMOD_METIS;
-  cholmod_factor* metis = cholmod_analyze(matrix_, &common_);
-  common_.nmethods = methods;
-  common_.method[0].ordering = ordering;
+  cholmod_factor* metis = analyzeWith(CHOLMOD_METIS, CHOLMOD_SUPERNODAL);
   if (!metis) return;  // METIS failed or is missing: AMD's ordering stands
   if (common_.fl < factorizationFlops_) {
     cholmod_free_factor(&factor_, &common_);

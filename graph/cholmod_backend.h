@@ -45,6 +45,10 @@ class CholmodBackend : public SymmetricBackend {
  private:
   void release();
   void tryNestedDissection(double matrixEntries);
+  // The matrix analysed with this one ordering and factorisation kind
+  // (CHOLMOD_SIMPLICIAL or CHOLMOD_SUPERNODAL), the default settings kept;
+  // null when CHOLMOD fails. Common's flop and fill counts are then this analysis'.
+  cholmod_factor* analyzeWith(int ordering, int kind);
   // Re-analyses for the simplicial factorisation when the supernodes average
   // fewer than kMinFlopsPerSupernode flops.
   void chooseFactorizationKind();

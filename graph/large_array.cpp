@@ -18,21 +18,16 @@ constexpr std::size_t kHugePage = std::size_t{2} << 20;
 std::size_t roundUp(std::size_t value, std::size_t unit) { return (value + unit - 1) / unit * unit; }
 
 #if defined(__linux__)
+
 std::size_t pageSize() {
   static const std::size_t size = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
   return size;
 }
-#endif
-
-}  // namespace
-
-#if defined(__linux__)
 
 // Mapped straight from the kernel rather than through malloc: a freed array
 // goes back to the system at once, so it never stays resident unused, and
 // the C library's heap never learns to keep arrays of this size.
-void* allocateLargeArray(std::size_t bytes) {
-  if (bytes < kHugePage) return ::operator new(bytes);
+void* mapAligned(std::size_t bytes) {
   const std::size_t length = roundUp(bytes, pageSize());
   // 2 MiB more than needed, then the ends unmapped: the array starts on a 2 MiB boundary.
   const std::size_t mapped = length + kHugePage;
@@ -50,29 +45,29 @@ void* allocateLargeArray(std::size_t bytes) {
   return pointer;
 }
 
-void freeLargeArray(void* pointer, std::size_t bytes) noexcept {
-  if (bytes < kHugePage)
-    ::operator delete(pointer);
-  else
-    munmap(pointer, roundUp(bytes, pageSize()));
-}
+void unmapAligned(void* pointer, std::size_t bytes) noexcept { munmap(pointer, roundUp(bytes, pageSize())); }
 
 #else
 
-void* allocateLargeArray(std::size_t bytes) {
-  if (bytes < kHugePage) return ::operator new(bytes);
+void* mapAligned(std::size_t bytes) {
   void* pointer = std::aligned_alloc(kHugePage, roundUp(bytes, kHugePage));
   if (pointer == nullptr) throw std::bad_alloc();
   return pointer;
 }
 
+void unmapAligned(void* pointer, std::size_t) noexcept { std::free(pointer); }
+
+#endif
+
+}  // namespace
+
+void* allocateLargeArray(std::size_t bytes) { return bytes < kHugePage ? ::operator new(bytes) : mapAligned(bytes); }
+
 void freeLargeArray(void* pointer, std::size_t bytes) noexcept {
   if (bytes < kHugePage)
     ::operator delete(pointer);
   else
-    std::free(pointer);
+    unmapAligned(pointer, bytes);
 }
-
-#endif
 
 }  // namespace lrsvo
