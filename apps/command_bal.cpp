@@ -112,7 +112,9 @@ void addBalCommand(CLI::App& app) {
   CLI::Option* file = command->add_option("file", options->file, "BAL file to read (uncompressed text)");
   command->add_option("--solver", options->solver, "Solver <algorithm>_<linear solver>, see `lrsvo solvers`")
       ->capture_default_str();
-  command->add_option("--threads", options->threads, "Threads for linearisation and the Schur complement")
+  command
+      ->add_option("--threads", options->threads,
+                   "Threads for linearisation, the Schur complement and the factorisation")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command->add_option("--max-iterations", options->maxIterations, "Iteration cap")

@@ -111,7 +111,7 @@ void addGraphCommand(CLI::App& app) {
   CLI::Option* file = command->add_option("file", options->file, "g2o file to read");
   command->add_option("--solver", options->solver, "Solver <algorithm>_<linear solver>, see `lrsvo solvers`")
       ->capture_default_str();
-  command->add_option("--threads", options->threads, "Threads for linearisation")
+  command->add_option("--threads", options->threads, "Threads for linearisation and the factorisation")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command->add_option("--max-iterations", options->maxIterations, "Iteration cap")

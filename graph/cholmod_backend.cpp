@@ -1,8 +1,10 @@
 #include "lrsvo/graph/cholmod_backend.h"
 
 #include <algorithm>
+#include <vector>
 
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/openmp_thread_limit.h"
 
 namespace lrsvo {
 
@@ -18,6 +20,52 @@ constexpr double kHeavyFill = 5.0;
 // speed, and the simplicial factorisation, column by column, is faster
 // (docs/pose_graphs.md: `lrsvo bench graph` on the generated graphs).
 constexpr double kMinFlopsPerSupernode = 1e5;
+
+const char* nameOf(int ordering) {
+  switch (ordering) {
+    case CHOLMOD_NATURAL: return "natural";
+    case CHOLMOD_GIVEN: return "given";
+    case CHOLMOD_AMD: return "amd";
+    case CHOLMOD_METIS: return "metis";
+    case CHOLMOD_NESDIS: return "nesdis";
+    case CHOLMOD_COLAMD: return "colamd";
+    case CHOLMOD_POSTORDERED: return "postordered";
+    default: return "unknown";
+  }
+}
+
+// The pattern of the blocks' upper triangle, one row and column per block.
+cholmod_sparse* blockGraph(int blockCount, const std::vector<std::pair<int, int>>& blockPairs, cholmod_common* common) {
+  std::vector<std::vector<int>> rowsOfColumn(static_cast<std::size_t>(blockCount));
+  for (const auto& [row, col] : blockPairs) rowsOfColumn[static_cast<std::size_t>(col)].push_back(row);
+  cholmod_sparse* graph = cholmod_allocate_sparse(blockCount, blockCount, blockPairs.size(), /*sorted=*/1,
+                                                  /*packed=*/1, /*stype=*/1, CHOLMOD_PATTERN, common);
+  if (!graph) return nullptr;
+  auto* colPtr = static_cast<int*>(graph->p);
+  auto* rowIdx = static_cast<int*>(graph->i);
+  int position = 0;
+  for (int c = 0; c < blockCount; ++c) {
+    colPtr[c] = position;
+    auto& rows = rowsOfColumn[static_cast<std::size_t>(c)];
+    std::sort(rows.begin(), rows.end());
+    for (int r : rows) rowIdx[position++] = r;
+  }
+  colPtr[blockCount] = position;
+  return graph;
+}
+
+// A permutation of the blocks as one of the scalars: each block's unknowns
+// together, in their order.
+std::vector<int> scalarPermutation(const std::vector<int>& blockOrder, const std::vector<int>& blockDims) {
+  std::vector<int> offsets(blockDims.size() + 1, 0);
+  for (std::size_t i = 0; i < blockDims.size(); ++i) offsets[i + 1] = offsets[i] + blockDims[i];
+  std::vector<int> permutation;
+  permutation.reserve(static_cast<std::size_t>(offsets.back()));
+  for (int block : blockOrder)
+    for (int k = 0; k < blockDims[static_cast<std::size_t>(block)]; ++k)
+      permutation.push_back(offsets[static_cast<std::size_t>(block)] + k);
+  return permutation;
+}
 
 }  // namespace
 
@@ -36,6 +84,8 @@ CholmodBackend::~CholmodBackend() {
 }
 
 void CholmodBackend::release() {
+  orderingName_ = "none";
+  factorizationFlops_ = 0.0;
   if (factor_) cholmod_free_factor(&factor_, &common_);
   if (matrix_) cholmod_free_sparse(&matrix_, &common_);
 }
@@ -88,21 +138,22 @@ void CholmodBackend::analyze(const std::vector<int>& blockDims, const std::vecto
   factor_ = cholmod_analyze(matrix_, &common_);
   if (!factor_) throw Error("cholmod: symbolic analysis failed");
   factorizationFlops_ = common_.fl;
+  orderingName_ = nameOf(factor_->ordering);
   if (ordering_ == CholmodOrdering::kLeastWork) {
     // The upper triangle's entries: diagonal blocks are stored whole.
     double upperEntries = static_cast<double>(nnz);
     for (int d : blockDims) upperEntries -= 0.5 * d * (d - 1);
-    tryNestedDissection(upperEntries);
+    if (common_.lnz >= kHeavyFill * upperEntries) tryNestedDissection(blockDims, blockPairs);
   }
   chooseFactorizationKind();
 }
 
-cholmod_factor* CholmodBackend::analyzeWith(int ordering, int kind) {
+cholmod_factor* CholmodBackend::analyzeWith(const int* permutation, int kind) {
   const int methods = common_.nmethods, defaultOrdering = common_.method[0].ordering, defaultKind = common_.supernodal;
   common_.nmethods = 1;
-  common_.method[0].ordering = ordering;
+  common_.method[0].ordering = CHOLMOD_GIVEN;
   common_.supernodal = kind;
-  cholmod_factor* factor = cholmod_analyze(matrix_, &common_);
+  cholmod_factor* factor = cholmod_analyze_p(matrix_, const_cast<int*>(permutation), nullptr, 0, &common_);
   common_.nmethods = methods;
   common_.method[0].ordering = defaultOrdering;
   common_.supernodal = defaultKind;
@@ -113,42 +164,45 @@ void CholmodBackend::chooseFactorizationKind() {
   if (!factor_->is_super || factor_->nsuper == 0) return;
   if (factorizationFlops_ / static_cast<double>(factor_->nsuper) >= kMinFlopsPerSupernode) return;
   // The same ordering, analysed for the simplicial factorisation.
-  cholmod_factor* simplicial = analyzeWith(factor_->ordering, CHOLMOD_SIMPLICIAL);
+  cholmod_factor* simplicial = analyzeWith(static_cast<const int*>(factor_->Perm), CHOLMOD_SIMPLICIAL);
   if (!simplicial) return;  // the supernodal analysis stands
   cholmod_free_factor(&factor_, &common_);
   factor_ = simplicial;
 }
 
-void CholmodBackend::tryNestedDissection(double matrixEntries) {
-  if (factor_->ordering != CHOLMOD_AMD || common_.lnz < kHeavyFill * matrixEntries) return;
-  cholmod_factor* metis = analyzeWith(CHOLMOD_METIS, CHOLMOD_SUPERNODAL);
-  if (!metis) return;  // METIS failed or is missing: AMD's ordering stands
-  if (common_.fl < factorizationFlops_) {
-    cholmod_free_factor(&factor_, &common_);
-    factor_ = metis;
-    factorizationFlops_ = common_.fl;
-  } else {
-    cholmod_free_factor(&metis, &common_);
+void CholmodBackend::tryNestedDissection(const std::vector<int>& blockDims,
+                                         const std::vector<std::pair<int, int>>& blockPairs) {
+  const int blockCount = static_cast<int>(blockDims.size());
+  cholmod_sparse* graph = blockGraph(blockCount, blockPairs, &common_);
+  if (!graph) return;  // AMD's ordering stands
+  std::vector<int> blockOrder(static_cast<std::size_t>(blockCount)), parent(blockOrder.size()),
+      member(blockOrder.size());
+  for (const int method : {CHOLMOD_METIS, CHOLMOD_NESDIS}) {
+    // Either fails when METIS is missing or out of memory: the others stand.
+    const bool ordered = method == CHOLMOD_METIS
+                             ? cholmod_metis(graph, nullptr, 0, /*postorder=*/1, blockOrder.data(), &common_) != 0
+                             : cholmod_nested_dissection(graph, nullptr, 0, blockOrder.data(), parent.data(),
+                                                         member.data(), &common_) >= 0;
+    if (!ordered) continue;
+    const std::vector<int> permutation = scalarPermutation(blockOrder, blockDims);
+    cholmod_factor* candidate = analyzeWith(permutation.data(), CHOLMOD_SUPERNODAL);
+    if (!candidate) continue;
+    if (common_.fl < factorizationFlops_) {
+      cholmod_free_factor(&factor_, &common_);
+      factor_ = candidate;
+      factorizationFlops_ = common_.fl;
+      orderingName_ = nameOf(method);
+    } else {
+      cholmod_free_factor(&candidate, &common_);
+    }
   }
-}
-
-const char* CholmodBackend::orderingName() const {
-  if (!factor_) return "none";
-  switch (factor_->ordering) {
-    case CHOLMOD_NATURAL: return "natural";
-    case CHOLMOD_GIVEN: return "given";
-    case CHOLMOD_AMD: return "amd";
-    case CHOLMOD_METIS: return "metis";
-    case CHOLMOD_NESDIS: return "nesdis";
-    case CHOLMOD_COLAMD: return "colamd";
-    case CHOLMOD_POSTORDERED: return "postordered";
-    default: return "unknown";
-  }
+  cholmod_free_sparse(&graph, &common_);
 }
 
 void CholmodBackend::setZero() { std::fill_n(static_cast<double*>(matrix_->x), matrix_->nzmax, 0.0); }
 
-bool CholmodBackend::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
+bool CholmodBackend::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) {
+  const OpenMpThreadLimit limit(threads);
   cholmod_factorize(matrix_, factor_, &common_);
   if (common_.status == CHOLMOD_NOT_POSDEF || factor_->minor < factor_->n) return false;
   cholmod_dense b;

@@ -18,9 +18,13 @@ namespace lrsvo {
 // beside it only when AMD's factor is both much fuller than the matrix and
 // dense in flops per entry. Lattices such as pose graphs fill in heavily at
 // fewer flops per entry, where nested dissection still cuts the work
-// (unit_tests/graph/test_cholmod_ordering.cpp); so kLeastWork also tries METIS whenever the factor is at least five
-// times as full as the matrix, and keeps the ordering whose factorisation takes fewer flops. Systems without such fill
-// (the window's, BAL's reduced camera systems) never pay for METIS.
+// (unit_tests/graph/test_cholmod_ordering.cpp). So kLeastWork, wherever the
+// factor is at least five times as full as the matrix, also dissects the graph
+// of blocks (one node per vertex) with METIS and with CHOLMOD's NESDIS, and
+// keeps the ordering whose factorisation takes the fewest flops. The block
+// graph is a sixth of a pose graph's scalar one per side, so it is dissected
+// faster, and a vertex's unknowns stay together in the order. Systems without
+// such fill (the window's, BAL's reduced camera systems) never pay for it.
 enum class CholmodOrdering { kLeastWork, kAmd };
 
 class CholmodBackend : public SymmetricBackend {
@@ -33,27 +37,32 @@ class CholmodBackend : public SymmetricBackend {
   void analyze(const std::vector<int>& blockDims, const std::vector<std::pair<int, int>>& blockPairs) override;
   BlockRef block(int k) override { return blocks_[k]; }
   void setZero() override;
-  bool solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) override;
+  bool solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) override;
 
-  // After analyze(): the ordering chosen ("amd", "metis", ...) and the flops of
-  // one factorisation with it, as CHOLMOD counts them.
-  const char* orderingName() const;
+  // After analyze(): the ordering chosen ("amd", "metis", "nesdis", ...) and
+  // the flops of one factorisation with it, as CHOLMOD counts them.
+  const char* orderingName() const { return orderingName_; }
   double factorizationFlops() const { return factorizationFlops_; }
+  FactorizationInfo factorization() const override { return {orderingName_, factorizationFlops_}; }
   // After analyze(): whether the factorisation is supernodal (else simplicial).
   bool supernodal() const { return factor_ && factor_->is_super; }
 
  private:
   void release();
-  void tryNestedDissection(double matrixEntries);
-  // The matrix analysed with this one ordering and factorisation kind
-  // (CHOLMOD_SIMPLICIAL or CHOLMOD_SUPERNODAL), the default settings kept;
-  // null when CHOLMOD fails. Common's flop and fill counts are then this analysis'.
-  cholmod_factor* analyzeWith(int ordering, int kind);
+  // Keeps the nested dissection of the block graph with fewer flops than the
+  // current factor, if any.
+  void tryNestedDissection(const std::vector<int>& blockDims, const std::vector<std::pair<int, int>>& blockPairs);
+  // The matrix analysed with this scalar permutation (postordered by CHOLMOD)
+  // for one factorisation kind (CHOLMOD_SIMPLICIAL or CHOLMOD_SUPERNODAL), the
+  // default settings kept; null when CHOLMOD fails. Common's flop and fill
+  // counts are then this analysis'.
+  cholmod_factor* analyzeWith(const int* permutation, int kind);
   // Re-analyses for the simplicial factorisation when the supernodes average
   // fewer than kMinFlopsPerSupernode flops.
   void chooseFactorizationKind();
 
   CholmodOrdering ordering_;
+  const char* orderingName_ = "none";
   double factorizationFlops_ = 0.0;
   cholmod_common common_;
   cholmod_sparse* matrix_ = nullptr;

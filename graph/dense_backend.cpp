@@ -2,6 +2,8 @@
 
 #include <Eigen/Cholesky>
 
+#include "lrsvo/graph/openmp_thread_limit.h"
+
 namespace lrsvo {
 
 void DenseBackend::analyze(const std::vector<int>& blockDims, const std::vector<std::pair<int, int>>& blockPairs) {
@@ -17,8 +19,15 @@ SymmetricBackend::BlockRef DenseBackend::block(int k) {
           static_cast<int>(matrix_.rows())};
 }
 
-bool DenseBackend::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
-  Eigen::LLT<Eigen::MatrixXd, Eigen::Upper> llt(matrix_);
+FactorizationInfo DenseBackend::factorization() const {
+  const double n = static_cast<double>(matrix_.rows());
+  return {"dense", n * n * n / 3.0};
+}
+
+bool DenseBackend::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) {
+  const OpenMpThreadLimit limit(threads);
+  // In place: the matrix is filled again before every solve.
+  Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Upper> llt(matrix_);
   if (llt.info() != Eigen::Success) return false;
   x = llt.solve(rhs);
   return x.allFinite();

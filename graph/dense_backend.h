@@ -11,7 +11,9 @@ class DenseBackend : public SymmetricBackend {
   void analyze(const std::vector<int>& blockDims, const std::vector<std::pair<int, int>>& blockPairs) override;
   BlockRef block(int k) override;
   void setZero() override { matrix_.setZero(); }
-  bool solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) override;
+  bool solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) override;
+  // No ordering; n^3 / 3 flops for n unknowns.
+  FactorizationInfo factorization() const override;
 
  private:
   Eigen::MatrixXd matrix_;

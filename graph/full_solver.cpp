@@ -24,7 +24,7 @@ bool FullSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, Ei
     for (int c = 0; c < system.dim(blocks[k].col); ++c)
       for (int r = 0; r < rows; ++r) target.data[c * target.ld + r] = source[c * rows + r];
   });
-  const bool ok = backend_->solve(rhs, x);
+  const bool ok = backend_->solve(rhs, x, threads);
   times_.factorizeSeconds += start.seconds();
   return ok;
 }

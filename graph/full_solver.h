@@ -15,6 +15,7 @@ class FullSolver : public LinearSolver {
   bool usesSchurOrdering() const override { return false; }
   void analyze(const BlockSystem& system) override;
   bool solve(const BlockSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) override;
+  FactorizationInfo factorization() const override { return backend_->factorization(); }
 
  private:
   std::unique_ptr<SymmetricBackend> backend_;

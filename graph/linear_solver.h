@@ -1,5 +1,7 @@
 #pragma once
 
+#include <string>
+
 #include <Eigen/Core>
 
 #include "lrsvo/graph/block_system.h"
@@ -10,6 +12,12 @@ namespace lrsvo {
 struct LinearSolverTimes {
   double schurSeconds = 0.0;      // eliminating marginalised blocks and back-substitution
   double factorizeSeconds = 0.0;  // factorising and solving the (reduced) system
+};
+
+// How a direct solver factorises its (reduced) system, after analyze().
+struct FactorizationInfo {
+  std::string ordering;  // fill-reducing ordering: "amd", "metis", "nesdis", "dense"; empty for iterative solvers
+  double flops = 0.0;    // of one factorisation, as the back end counts them; 0 when unknown
 };
 
 template <typename Product>
@@ -33,6 +41,7 @@ class LinearSolver {
   // False for iterative solvers, whose steps solve H x = rhs only to their
   // tolerance (the optimiser then predicts a step's decrease from H itself).
   virtual bool exactSteps() const { return true; }
+  virtual FactorizationInfo factorization() const { return {}; }
 
   const LinearSolverTimes& times() const { return times_; }
 

@@ -98,6 +98,9 @@ SolverSummary Optimizer::optimize(Graph& graph, ConstraintHandler& constraints) 
   solver->analyze(system);
 
   SolverSummary summary = beginSummary(options_.name(), graph, system, options_.threads);
+  const FactorizationInfo factorization = solver->factorization();
+  summary.ordering = factorization.ordering;
+  summary.factorizationFlops = factorization.flops;
   if (!std::isfinite(summary.initialCost)) throwNonFiniteCost(graph);
   summary.setupSeconds = start.seconds();
 

@@ -207,7 +207,7 @@ bool SchurSolver::solve(const BlockSystem& system, const Eigen::VectorXd& rhs, E
   const double reduceSeconds = phase.lap();
 
   Eigen::VectorXd xFree;
-  const bool ok = freeCount == 0 || backend_->solve(reducedRhs, xFree);
+  const bool ok = freeCount == 0 || backend_->solve(reducedRhs, xFree, threads);
   const double solveSeconds = phase.lap();
   if (!ok) return false;
 

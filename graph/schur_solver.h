@@ -28,6 +28,7 @@ class SchurSolver : public LinearSolver {
   bool usesSchurOrdering() const override { return true; }
   void analyze(const BlockSystem& system) override;
   bool solve(const BlockSystem& system, const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) override;
+  FactorizationInfo factorization() const override { return backend_->factorization(); }
 
   // Number of blocks in the reduced system (for tests and diagnostics).
   int reducedBlockCount() const { return static_cast<int>(columns_.size()); }

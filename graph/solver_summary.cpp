@@ -54,6 +54,8 @@ std::string SolverSummary::fullReport() const {
   out << format("Steps: %d successful, %d unsuccessful\n", successfulSteps, unsuccessfulSteps);
   out << format("Time (s): setup %.4f, linearize %.4f, schur %.4f, factorize %.4f, cost %.4f, total %.4f\n",
                 setupSeconds, linearizeSeconds, schurSeconds, factorizeSeconds, costSeconds, totalSeconds);
+  if (!ordering.empty())
+    out << format("Linear system: %s ordering, %.3e flops per factorisation\n", ordering.c_str(), factorizationFlops);
   out << "Termination: " << terminationName(termination) << (message.empty() ? "" : " (" + message + ")") << '\n';
   return out.str();
 }
@@ -74,6 +76,8 @@ std::string SolverSummary::toJson() const {
       {"converged", converged()},
       {"message", message},
       {"total_time_s", totalSeconds},
+      {"ordering", ordering},
+      {"factorization_flops", factorizationFlops},
       {"phase_time_s",
        {{"setup", setupSeconds},
         {"linearize", linearizeSeconds},

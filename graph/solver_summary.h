@@ -53,6 +53,10 @@ struct SolverSummary {
   double factorizeSeconds = 0.0;
   double costSeconds = 0.0;  // evaluating trial steps
   double totalSeconds = 0.0;
+  // The direct linear solver's fill-reducing ordering and the flops of one
+  // factorisation (LinearSolver::factorization); empty and 0 for iterative ones.
+  std::string ordering;
+  double factorizationFlops = 0.0;
 
   int iterationCount() const { return static_cast<int>(iterations.size()) - 1; }
   bool converged() const { return isConvergence(termination); }

@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 
+#include "lrsvo/graph/linear_solver.h"
+
 namespace lrsvo {
 
 // Storage and factorisation of a symmetric positive definite matrix given as
@@ -22,8 +24,12 @@ class SymmetricBackend {
   // Block k of the pairs given to analyze().
   virtual BlockRef block(int k) = 0;
   virtual void setZero() = 0;
-  // Factorises and solves; false when the matrix is not positive definite.
-  virtual bool solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) = 0;
+  // Factorises and solves on at most `threads` threads; false when the
+  // matrix is not positive definite. The values may be overwritten by the
+  // factor: fill them again before the next solve.
+  virtual bool solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, int threads) = 0;
+  // After analyze().
+  virtual FactorizationInfo factorization() const = 0;
 };
 
 }  // namespace lrsvo

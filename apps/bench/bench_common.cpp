@@ -69,6 +69,8 @@ SolveResult resultFromSummary(const SolverSummary& summary, const Stopwatch& sto
   result.linearSolveSeconds = summary.schurSeconds + summary.factorizeSeconds;
   result.schurSeconds = summary.schurSeconds;
   result.costSeconds = summary.costSeconds;
+  result.ordering = summary.ordering;
+  if (!summary.ordering.empty()) result.factorizationFlops = summary.factorizationFlops;
   return result;
 }
 
@@ -136,6 +138,8 @@ nlohmann::ordered_json rowsToJson(const std::vector<BenchRow>& rows) {
     object["schur_s"] = optionalNumber(r.schurSeconds);
     object["cost_s"] = r.costSeconds;
     object["solve_mb"] = optionalNumber(r.solveMegabytes);
+    object["ordering"] = r.ordering.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.ordering);
+    object["factorization_flops"] = optionalNumber(r.factorizationFlops);
     list.push_back(std::move(object));
   }
   return list;

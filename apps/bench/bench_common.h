@@ -36,6 +36,8 @@ struct SolveResult {
   std::optional<double> schurSeconds;    // part of linearSolveSeconds, when the library reports it
   double costSeconds = 0.0;              // cost of trial steps
   std::optional<double> solveMegabytes;  // memory the solve call added at its peak (SolveMemory)
+  std::string ordering;                  // ours: the direct solver's fill-reducing ordering (SolverSummary)
+  std::optional<double> factorizationFlops;
 
   // Time of one iteration of the minimiser loop: (total - setup) / iterations.
   double secondsPerIteration() const { return (totalSeconds - setupSeconds) / (iterations > 0 ? iterations : 1); }

@@ -209,6 +209,11 @@ void bindGraph(py::module_& m) {
       .def_property_readonly("termination",
                              [](const SolverSummary& s) { return std::string(terminationName(s.termination)); })
       .def_readonly("message", &SolverSummary::message)
+      .def_readonly("ordering", &SolverSummary::ordering,
+                    "The direct linear solver's fill-reducing ordering ('amd', 'metis', 'nesdis', 'dense'); "
+                    "empty for iterative ones.")
+      .def_readonly("factorization_flops", &SolverSummary::factorizationFlops,
+                    "Flops of one factorisation of the (reduced) system; 0 for iterative solvers.")
       .def("brief_report", &SolverSummary::briefReport, "One line: solver, costs, iterations, why it stopped.")
       .def("full_report", &SolverSummary::fullReport, "The full text report, as `lrsvo bal` prints it.")
       .def("to_json", &SolverSummary::toJson, "The summary as JSON text (what to_dict() parses).")

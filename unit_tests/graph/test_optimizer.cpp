@@ -285,5 +285,34 @@ TEST(Optimizer, SummaryJsonHasTheRequiredFields) {
   EXPECT_EQ(json["iteration_log"].size(), summary.iterations.size());
 }
 
+// The summary says how the (reduced) system was factorised: the dense back
+// end has no ordering and takes n^3 / 3 flops for the n unknowns of the poses
+// and the shared scale; CHOLMOD names its ordering and counts at least the
+// diagonal's n flops; an iterative solver factorises nothing.
+TEST(Optimizer, SummaryNamesTheFactorisation) {
+  const ToyOptions problem = noisyProblem(2);  // even seed: a shared scale
+  ASSERT_TRUE(problem.sharedScale);
+  const double reduced = 6.0 * (problem.poses - problem.fixedPoses) + 1.0;
+  for (const char* name : {"lm_schur_dense", "lm_schur_cholmod", "lm_schur_pcg"}) {
+    SCOPED_TRACE(name);
+    Graph graph = makeToyProblem(problem);
+    const SolverSummary summary = Optimizer(SolverOptions::fromName(name)).optimize(graph);
+    const nlohmann::json json = nlohmann::json::parse(summary.toJson());
+    EXPECT_EQ(json["ordering"].get<std::string>(), summary.ordering);
+    EXPECT_EQ(json["factorization_flops"].get<double>(), summary.factorizationFlops);
+    if (std::string(name) == "lm_schur_dense") {
+      EXPECT_EQ(summary.ordering, "dense");
+      EXPECT_DOUBLE_EQ(summary.factorizationFlops, reduced * reduced * reduced / 3.0);
+    } else if (std::string(name) == "lm_schur_cholmod") {
+      EXPECT_FALSE(summary.ordering.empty());
+      EXPECT_GE(summary.factorizationFlops, reduced);
+      EXPECT_NE(summary.fullReport().find(summary.ordering + " ordering"), std::string::npos);
+    } else {
+      EXPECT_TRUE(summary.ordering.empty());
+      EXPECT_EQ(summary.factorizationFlops, 0.0);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace lrsvo::test

@@ -67,6 +67,8 @@ def test_a_bal_solve_gives_the_cli_final_cost(run_cli, tmp_path):
     assert summary.initial_cost == cli["initial_cost"]
     assert summary.final_cost == cli["final_cost"]
     assert summary.iterations == cli["iterations"]
+    assert summary.ordering == cli["ordering"] and summary.ordering != ""
+    assert summary.factorization_flops == cli["factorization_flops"] > 0
     problem.update_from(graph)
     assert problem.rms_reprojection_error() < 2.0  # pixel noise sigma 1: the residual RMS is about 1 at the optimum
 

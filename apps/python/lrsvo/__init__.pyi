@@ -16,6 +16,8 @@ class SolverSummary:
     unsuccessful_steps: int
     total_seconds: float
     message: str
+    ordering: str
+    factorization_flops: float
     @property
     def iterations(self) -> int: ...
     @property
