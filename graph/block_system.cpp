@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
-#include <unordered_map>
 
 #include "lrsvo/graph/block_kernels.h"
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/parallel_for.h"
+#include "lrsvo/graph/vertex_positions.h"
 
 namespace lrsvo {
 
@@ -16,30 +16,100 @@ namespace {
 
 // Active vertices (non-fixed, on at least one edge) in graph order, free ones
 // first when the Schur ordering is asked for.
-std::vector<Vertex*> orderVertices(const Graph& graph, bool schurOrdering, int* freeCount) {
-  std::unordered_map<const Vertex*, bool> used;
+std::vector<Vertex*> orderVertices(const Graph& graph, const VertexPositions& positions, bool schurOrdering,
+                                   int* freeCount) {
+  std::vector<char> used(graph.vertices().size(), 0);
   for (const auto& edge : graph.edges())
-    for (Vertex* v : edge->vertices())
-      if (!v->fixed()) used[v] = true;
+    for (const Vertex* v : edge->vertices()) {
+      const int position = positions.find(v);
+      if (position >= 0 && !v->fixed()) used[static_cast<std::size_t>(position)] = 1;
+    }
   std::vector<Vertex*> free, marginalised;
-  for (const auto& v : graph.vertices()) {
-    if (!used.count(v.get())) continue;
-    (schurOrdering && v->marginalized() ? marginalised : free).push_back(v.get());
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    if (!used[i]) continue;
+    Vertex* v = graph.vertices()[i].get();
+    (schurOrdering && v->marginalized() ? marginalised : free).push_back(v);
   }
   *freeCount = static_cast<int>(free.size());
   free.insert(free.end(), marginalised.begin(), marginalised.end());
   return free;
 }
 
-// items sorted by key(item) in [0, keyCount), items of one key in their order.
-template <typename Items, typename Key>
-Items stableCountingSort(const Items& items, int keyCount, const Key& key) {
-  std::vector<std::size_t> start(static_cast<std::size_t>(keyCount) + 1, 0);
-  for (const auto& item : items) ++start[static_cast<std::size_t>(key(item)) + 1];
-  for (std::size_t k = 0; k < static_cast<std::size_t>(keyCount); ++k) start[k + 1] += start[k];
-  Items sorted(items.size());
-  for (const auto& item : items) sorted[start[static_cast<std::size_t>(key(item))]++] = item;
-  return sorted;
+// Stable sort of a short range by key: insertion sort where std::stable_sort
+// would allocate a buffer for a handful of items.
+template <typename Iterator, typename Key>
+void stableSortBy(Iterator first, Iterator last, const Key& key) {
+  if (last - first > 32) {
+    std::stable_sort(first, last, [&](const auto& x, const auto& y) { return key(x) < key(y); });
+    return;
+  }
+  for (Iterator i = first + 1; i < last; ++i) {
+    auto item = *i;
+    Iterator j = i;
+    for (; j > first && key(*(j - 1)) > key(item); --j) *j = *(j - 1);
+    *j = item;
+  }
+}
+
+// One pair (row <= col) of an edge's active vertices, in its column's list.
+struct PairSlot {
+  int row;
+  Edge* edge;
+  int a;  // the edge's local index of the row vertex
+  int b;  // the edge's local index of the column vertex
+};
+
+// Calls visit(row, col, edge, a, b) for every pair of an edge's active
+// vertices with row <= col, edge by edge in graph order.
+template <typename Visit>
+void forEachPair(const Graph& graph, const VertexPositions& positions, const std::vector<int>& blockOfPosition,
+                 const Visit& visit) {
+  std::vector<int> edgeBlocks;  // block of each of an edge's vertices, -1 if inactive
+  for (const auto& edgePtr : graph.edges()) {
+    Edge* edge = edgePtr.get();
+    const int n = edge->vertexCount();
+    edgeBlocks.assign(static_cast<std::size_t>(n), -1);
+    for (int a = 0; a < n; ++a) {
+      const int position = positions.find(edge->vertex(a));
+      if (position >= 0) edgeBlocks[static_cast<std::size_t>(a)] = blockOfPosition[static_cast<std::size_t>(position)];
+    }
+    for (int a = 0; a < n; ++a) {
+      const int row = edgeBlocks[static_cast<std::size_t>(a)];
+      if (row < 0) continue;
+      for (int b = 0; b < n; ++b) {
+        const int col = edgeBlocks[static_cast<std::size_t>(b)];
+        if (col >= 0 && row <= col) visit(row, col, edge, a, b);
+      }
+    }
+  }
+}
+
+// Every pair, bucketed by column in two passes over the edges (count, then
+// place) and sorted by row within its column, each pair's edges in edge order
+// (the order H's blocks sum them in): no list of all pairs is sorted or
+// copied. columnStart gets the buckets' bounds (CSR).
+LargeArray<PairSlot> pairsByColumn(const Graph& graph, const VertexPositions& positions,
+                                   const std::vector<int>& blockOfPosition, int blockCount,
+                                   std::vector<std::size_t>* columnStart) {
+  std::vector<std::size_t>& start = *columnStart;
+  start.assign(static_cast<std::size_t>(blockCount) + 1, 0);
+  forEachPair(graph, positions, blockOfPosition, [&](int row, int col, const Edge* edge, int a, int b) {
+    if (row == col && a != b)
+      throw Error(std::string("edge ") + edge->typeTag() + " names vertex " + std::to_string(edge->vertex(a)->id()) +
+                  " twice");
+    ++start[static_cast<std::size_t>(col) + 1];
+  });
+  for (std::size_t c = 0; c + 1 < start.size(); ++c) start[c + 1] += start[c];
+  LargeArray<PairSlot> slots(start.back());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  forEachPair(graph, positions, blockOfPosition, [&](int row, int col, Edge* edge, int a, int b) {
+    slots[next[static_cast<std::size_t>(col)]++] = PairSlot{row, edge, a, b};
+  });
+  for (std::size_t c = 0; c + 1 < start.size(); ++c)
+    stableSortBy(slots.begin() + static_cast<std::ptrdiff_t>(start[c]),
+                 slots.begin() + static_cast<std::ptrdiff_t>(start[c + 1]),
+                 [](const PairSlot& slot) { return slot.row; });
+  return slots;
 }
 
 }  // namespace
@@ -47,91 +117,76 @@ Items stableCountingSort(const Items& items, int keyCount, const Key& key) {
 BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
   if (graph.empty()) throw Error("optimise: the graph has no vertices");
   if (graph.edges().empty()) throw Error("optimise: the graph has no edges");
-  vertices_ = orderVertices(graph, schurOrdering, &freeCount_);
+  std::vector<const Vertex*> graphVertices;
+  graphVertices.reserve(graph.vertices().size());
+  for (const auto& v : graph.vertices()) graphVertices.push_back(v.get());
+  const VertexPositions positions(graphVertices);
+  vertices_ = orderVertices(graph, positions, schurOrdering, &freeCount_);
   if (vertices_.empty()) throw Error("optimise: every vertex on an edge is fixed; nothing to optimise");
 
-  std::unordered_map<const Vertex*, int>& index = blockIndex_;
-  index.reserve(vertices_.size());
+  // The block of each graph position, -1 for fixed vertices and those on no edge.
+  std::vector<int> blockOfPosition(graphVertices.size(), -1);
+  blockIndex_.reserve(vertices_.size());
   for (int i = 0; i < blockCount(); ++i) {
-    index[vertices_[i]] = i;
+    blockIndex_[vertices_[i]] = i;
+    blockOfPosition[static_cast<std::size_t>(positions.find(vertices_[i]))] = i;
     dims_.push_back(vertices_[i]->dimension());
     offsets_.push_back(scalarCount_);
     scalarCount_ += dims_.back();
   }
 
-  // Every pair (row <= col) of an edge's active vertices, in edge order.
-  struct Entry {
-    int row;
-    int col;
-    Contribution contribution;
-  };
-  // At most every pair of each edge's vertices: reserved once, as growing
-  // the array would copy it and hold two copies at once.
-  std::size_t pairBound = 0;
-  for (const auto& edge : graph.edges())
-    pairBound += static_cast<std::size_t>(edge->vertexCount()) * (edge->vertexCount() + 1) / 2;
-  LargeArray<Entry> entries;
-  entries.reserve(pairBound);
-  std::vector<int> edgeBlocks;  // block index of each of an edge's vertices, -1 if inactive
-  for (const auto& edgePtr : graph.edges()) {
-    Edge* edge = edgePtr.get();
-    edges_.push_back(edge);
-    edgeBlocks.assign(static_cast<std::size_t>(edge->vertexCount()), -1);
-    for (int a = 0; a < edge->vertexCount(); ++a) {
-      const auto found = index.find(edge->vertex(a));
-      if (found != index.end()) edgeBlocks[static_cast<std::size_t>(a)] = found->second;
-    }
-    for (int a = 0; a < edge->vertexCount(); ++a) {
-      const int row = edgeBlocks[static_cast<std::size_t>(a)];
-      if (row < 0) continue;
-      for (int b = 0; b < edge->vertexCount(); ++b) {
-        const int col = edgeBlocks[static_cast<std::size_t>(b)];
-        if (col < 0 || row > col) continue;
-        if (row == col && a != b)
-          throw Error(std::string("edge ") + edge->typeTag() + " names vertex " +
-                      std::to_string(edge->vertex(a)->id()) + " twice");
-        entries.push_back({row, col, {edge, a, b}});
-      }
-    }
-  }
-  // Grouped by pair, column by column and row by row, each pair's edges in
-  // edge order (the order H's blocks sum them in).
-  entries = stableCountingSort(entries, blockCount(), [](const Entry& e) { return e.row; });
-  entries = stableCountingSort(entries, blockCount(), [](const Entry& e) { return e.col; });
+  edges_.reserve(graph.edges().size());
+  for (const auto& edge : graph.edges()) edges_.push_back(edge.get());
+  std::vector<std::size_t> columnStart;
+  LargeArray<PairSlot> slots = pairsByColumn(graph, positions, blockOfPosition, blockCount(), &columnStart);
 
-  // Block ids: the diagonal of vertex i is block i, the others follow in
-  // that order. colBlockIds_ lists every block in that order.
+  // Block ids: the diagonal of vertex i is block i, the others follow column
+  // by column, row by row (a column's diagonal, row == col, ends it);
+  // colBlockIds_ lists every block in that order. The contributions go by
+  // block id: the diagonals' first, in column order, then the others in the
+  // order of the walk.
   for (int i = 0; i < blockCount(); ++i) blocks_.push_back(Block{i, i, 0});
-  LargeArray<int> entryBlock(entries.size());
   rowStart_.assign(blockCount() + 1, 0);
   colStart_.assign(blockCount() + 1, 0);
-  for (std::size_t e = 0; e < entries.size(); ++e) {
-    const Entry& entry = entries[e];
-    const bool newPair = e == 0 || entry.row != entries[e - 1].row || entry.col != entries[e - 1].col;
-    if (newPair && entry.row != entry.col) blocks_.push_back(Block{entry.row, entry.col, 0});
-    entryBlock[e] = entry.row == entry.col ? entry.row : static_cast<int>(blocks_.size()) - 1;
-    if (newPair) {
-      colBlockIds_.push_back(entryBlock[e]);
-      ++rowStart_[entry.row + 1];
-      ++colStart_[entry.col + 1];
+  std::size_t diagonalSlots = 0;
+  std::vector<std::size_t> contributionCount(static_cast<std::size_t>(blockCount()), 0);
+  for (int c = 0; c < blockCount(); ++c) {
+    const auto first = slots.begin() + static_cast<std::ptrdiff_t>(columnStart[static_cast<std::size_t>(c)]);
+    const auto last = slots.begin() + static_cast<std::ptrdiff_t>(columnStart[static_cast<std::size_t>(c) + 1]);
+    for (auto slot = first; slot != last; ++slot) {
+      const bool newPair = slot == first || slot->row != (slot - 1)->row;
+      if (slot->row == c) {
+        ++diagonalSlots;
+        ++contributionCount[static_cast<std::size_t>(c)];
+      } else if (newPair) {
+        blocks_.push_back(Block{slot->row, c, 0});
+        contributionCount.push_back(1);
+      } else {
+        ++contributionCount.back();
+      }
+      if (newPair) {
+        colBlockIds_.push_back(slot->row == c ? c : static_cast<int>(blocks_.size()) - 1);
+        ++rowStart_[slot->row + 1];
+        ++colStart_[c + 1];
+      }
     }
   }
   for (int i = 0; i < blockCount(); ++i) {
     rowStart_[i + 1] += rowStart_[i];
     colStart_[i + 1] += colStart_[i];
   }
-
   contributionStart_.assign(blocks_.size() + 1, 0);
-  for (int id : entryBlock) ++contributionStart_[static_cast<std::size_t>(id) + 1];
-  for (std::size_t k = 0; k < blocks_.size(); ++k) contributionStart_[k + 1] += contributionStart_[k];
-  contributions_.resize(entries.size());
-  std::vector<std::size_t> next(contributionStart_.begin(), contributionStart_.end() - 1);
-  for (std::size_t e = 0; e < entries.size(); ++e)
-    contributions_[next[static_cast<std::size_t>(entryBlock[e])]++] = entries[e].contribution;
+  for (std::size_t k = 0; k < blocks_.size(); ++k)
+    contributionStart_[k + 1] = contributionStart_[k] + contributionCount[k];
+  contributions_.resize(slots.size());
+  std::size_t nextDiagonal = 0, nextOther = diagonalSlots;
+  for (int c = 0; c < blockCount(); ++c)
+    for (std::size_t e = columnStart[static_cast<std::size_t>(c)]; e < columnStart[static_cast<std::size_t>(c) + 1];
+         ++e)
+      contributions_[slots[e].row == c ? nextDiagonal++ : nextOther++] = {slots[e].edge, slots[e].a, slots[e].b};
   // Released before H's values are allocated, so the set-up's peak memory is
   // the larger of the two, not their sum.
-  LargeArray<Entry>().swap(entries);
-  LargeArray<int>().swap(entryBlock);
+  LargeArray<PairSlot>().swap(slots);
 
   // Each row's blocks listed by column.
   rowBlockIds_.resize(colBlockIds_.size());
