@@ -174,7 +174,7 @@ void CholmodBackend::tryNestedDissection(const std::vector<int>& blockDims,
                                          const std::vector<std::pair<int, int>>& blockPairs) {
   const int blockCount = static_cast<int>(blockDims.size());
   cholmod_sparse* graph = blockGraph(blockCount, blockPairs, &common_);
-  if (!graph) return;  // AMD's ordering stands
+  if (!graph) return;  // CHOLMOD's own ordering stands
   std::vector<int> blockOrder(static_cast<std::size_t>(blockCount)), parent(blockOrder.size()),
       member(blockOrder.size());
   for (const int method : {CHOLMOD_METIS, CHOLMOD_NESDIS}) {
