@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "lrsvo/graph/cholmod_backend.h"
 
@@ -48,7 +49,7 @@ BlockPattern dense(int blocks) {
 }
 
 struct FilledSystem {
-  Eigen::MatrixXd matrix;  // the whole symmetric matrix, as the blocks hold its upper triangle
+  Eigen::SparseMatrix<double> matrix;  // the whole symmetric matrix, as the blocks hold its upper triangle
   Eigen::VectorXd rhs;
 };
 
@@ -61,7 +62,8 @@ FilledSystem fill(CholmodBackend& backend, const BlockPattern& pattern, double d
   std::uniform_real_distribution<double> offDiagonal(-0.1, 0.1);
   std::vector<int> offsets{0};
   for (int d : pattern.dims) offsets.push_back(offsets.back() + d);
-  FilledSystem system{Eigen::MatrixXd::Zero(offsets.back(), offsets.back()), Eigen::VectorXd(offsets.back())};
+  FilledSystem system{Eigen::SparseMatrix<double>(offsets.back(), offsets.back()), Eigen::VectorXd(offsets.back())};
+  std::vector<Eigen::Triplet<double>> entries;
   backend.setZero();
   for (int k = 0; k < static_cast<int>(pattern.pairs.size()); ++k) {
     const auto [row, col] = pattern.pairs[k];
@@ -70,9 +72,11 @@ FilledSystem fill(CholmodBackend& backend, const BlockPattern& pattern, double d
       for (int r = 0; r < pattern.dims[row]; ++r) {
         const double value = row == col ? (r == c ? diagonal : 0.0) : offDiagonal(random);
         block.data[c * block.ld + r] = value;
-        system.matrix(offsets[row] + r, offsets[col] + c) = system.matrix(offsets[col] + c, offsets[row] + r) = value;
+        entries.emplace_back(offsets[row] + r, offsets[col] + c, value);
+        if (row != col) entries.emplace_back(offsets[col] + c, offsets[row] + r, value);
       }
   }
+  system.matrix.setFromTriplets(entries.begin(), entries.end());
   for (int i = 0; i < system.rhs.size(); ++i) system.rhs[i] = offDiagonal(random);
   return system;
 }
