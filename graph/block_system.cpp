@@ -148,21 +148,20 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
   for (int i = 0; i < blockCount(); ++i) blocks_.push_back(Block{i, i, 0});
   rowStart_.assign(blockCount() + 1, 0);
   colStart_.assign(blockCount() + 1, 0);
-  std::size_t diagonalSlots = 0;
-  std::vector<std::size_t> contributionCount(static_cast<std::size_t>(blockCount()), 0);
+  // Each block's contribution count at [id + 1], summed into the starts below.
+  contributionStart_.assign(static_cast<std::size_t>(blockCount()) + 1, 0);
   for (int c = 0; c < blockCount(); ++c) {
     const auto first = slots.begin() + static_cast<std::ptrdiff_t>(columnStart[static_cast<std::size_t>(c)]);
     const auto last = slots.begin() + static_cast<std::ptrdiff_t>(columnStart[static_cast<std::size_t>(c) + 1]);
     for (auto slot = first; slot != last; ++slot) {
       const bool newPair = slot == first || slot->row != (slot - 1)->row;
       if (slot->row == c) {
-        ++diagonalSlots;
-        ++contributionCount[static_cast<std::size_t>(c)];
+        ++contributionStart_[static_cast<std::size_t>(c) + 1];
       } else if (newPair) {
         blocks_.push_back(Block{slot->row, c, 0});
-        contributionCount.push_back(1);
+        contributionStart_.push_back(1);
       } else {
-        ++contributionCount.back();
+        ++contributionStart_.back();
       }
       if (newPair) {
         colBlockIds_.push_back(slot->row == c ? c : static_cast<int>(blocks_.size()) - 1);
@@ -175,11 +174,10 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
     rowStart_[i + 1] += rowStart_[i];
     colStart_[i + 1] += colStart_[i];
   }
-  contributionStart_.assign(blocks_.size() + 1, 0);
-  for (std::size_t k = 0; k < blocks_.size(); ++k)
-    contributionStart_[k + 1] = contributionStart_[k] + contributionCount[k];
+  for (std::size_t k = 0; k < blocks_.size(); ++k) contributionStart_[k + 1] += contributionStart_[k];
   contributions_.resize(slots.size());
-  std::size_t nextDiagonal = 0, nextOther = diagonalSlots;
+  // The diagonals' contributions fill [0, start of the first other block).
+  std::size_t nextDiagonal = 0, nextOther = contributionStart_[static_cast<std::size_t>(blockCount())];
   for (int c = 0; c < blockCount(); ++c)
     for (std::size_t e = columnStart[static_cast<std::size_t>(c)]; e < columnStart[static_cast<std::size_t>(c) + 1];
          ++e)

@@ -34,36 +34,33 @@ const char* nameOf(int ordering) {
   }
 }
 
-// The pattern of the blocks' upper triangle, one row and column per block.
-cholmod_sparse* blockGraph(int blockCount, const std::vector<std::pair<int, int>>& blockPairs, cholmod_common* common) {
-  std::vector<std::vector<int>> rowsOfColumn(static_cast<std::size_t>(blockCount));
-  for (const auto& [row, col] : blockPairs) rowsOfColumn[static_cast<std::size_t>(col)].push_back(row);
+// The pattern of the blocks' upper triangle, one row and column per block,
+// from each column's pairs (indices into blockPairs, in row order).
+cholmod_sparse* blockGraph(const std::vector<std::vector<int>>& columnPairs,
+                           const std::vector<std::pair<int, int>>& blockPairs, cholmod_common* common) {
+  const auto blockCount = columnPairs.size();
   cholmod_sparse* graph = cholmod_allocate_sparse(blockCount, blockCount, blockPairs.size(), /*sorted=*/1,
                                                   /*packed=*/1, /*stype=*/1, CHOLMOD_PATTERN, common);
   if (!graph) return nullptr;
   auto* colPtr = static_cast<int*>(graph->p);
   auto* rowIdx = static_cast<int*>(graph->i);
   int position = 0;
-  for (int c = 0; c < blockCount; ++c) {
+  for (std::size_t c = 0; c < blockCount; ++c) {
     colPtr[c] = position;
-    auto& rows = rowsOfColumn[static_cast<std::size_t>(c)];
-    std::sort(rows.begin(), rows.end());
-    for (int r : rows) rowIdx[position++] = r;
+    for (int pair : columnPairs[c]) rowIdx[position++] = blockPairs[static_cast<std::size_t>(pair)].first;
   }
   colPtr[blockCount] = position;
   return graph;
 }
 
 // A permutation of the blocks as one of the scalars: each block's unknowns
-// together, in their order.
-std::vector<int> scalarPermutation(const std::vector<int>& blockOrder, const std::vector<int>& blockDims) {
-  std::vector<int> offsets(blockDims.size() + 1, 0);
-  for (std::size_t i = 0; i < blockDims.size(); ++i) offsets[i + 1] = offsets[i] + blockDims[i];
+// together, in their order. offsets: each block's first scalar, and the total.
+std::vector<int> scalarPermutation(const std::vector<int>& blockOrder, const std::vector<int>& offsets) {
   std::vector<int> permutation;
   permutation.reserve(static_cast<std::size_t>(offsets.back()));
   for (int block : blockOrder)
-    for (int k = 0; k < blockDims[static_cast<std::size_t>(block)]; ++k)
-      permutation.push_back(offsets[static_cast<std::size_t>(block)] + k);
+    for (int k = offsets[static_cast<std::size_t>(block)]; k < offsets[static_cast<std::size_t>(block) + 1]; ++k)
+      permutation.push_back(k);
   return permutation;
 }
 
@@ -143,7 +140,7 @@ void CholmodBackend::analyze(const std::vector<int>& blockDims, const std::vecto
     // The upper triangle's entries: diagonal blocks are stored whole.
     double upperEntries = static_cast<double>(nnz);
     for (int d : blockDims) upperEntries -= 0.5 * d * (d - 1);
-    if (common_.lnz >= kHeavyFill * upperEntries) tryNestedDissection(blockDims, blockPairs);
+    if (common_.lnz >= kHeavyFill * upperEntries) tryNestedDissection(offsets, columnPairs, blockPairs);
   }
   chooseFactorizationKind();
 }
@@ -170,13 +167,12 @@ void CholmodBackend::chooseFactorizationKind() {
   factor_ = simplicial;
 }
 
-void CholmodBackend::tryNestedDissection(const std::vector<int>& blockDims,
+void CholmodBackend::tryNestedDissection(const std::vector<int>& offsets,
+                                         const std::vector<std::vector<int>>& columnPairs,
                                          const std::vector<std::pair<int, int>>& blockPairs) {
-  const int blockCount = static_cast<int>(blockDims.size());
-  cholmod_sparse* graph = blockGraph(blockCount, blockPairs, &common_);
+  cholmod_sparse* graph = blockGraph(columnPairs, blockPairs, &common_);
   if (!graph) return;  // CHOLMOD's own ordering stands
-  std::vector<int> blockOrder(static_cast<std::size_t>(blockCount)), parent(blockOrder.size()),
-      member(blockOrder.size());
+  std::vector<int> blockOrder(columnPairs.size()), parent(blockOrder.size()), member(blockOrder.size());
   for (const int method : {CHOLMOD_METIS, CHOLMOD_NESDIS}) {
     // Either fails when METIS is missing or out of memory: the others stand.
     const bool ordered = method == CHOLMOD_METIS
@@ -184,7 +180,7 @@ void CholmodBackend::tryNestedDissection(const std::vector<int>& blockDims,
                              : cholmod_nested_dissection(graph, nullptr, 0, blockOrder.data(), parent.data(),
                                                          member.data(), &common_) >= 0;
     if (!ordered) continue;
-    const std::vector<int> permutation = scalarPermutation(blockOrder, blockDims);
+    const std::vector<int> permutation = scalarPermutation(blockOrder, offsets);
     cholmod_factor* candidate = analyzeWith(permutation.data(), CHOLMOD_SUPERNODAL);
     if (!candidate) continue;
     if (common_.fl < factorizationFlops_) {

@@ -50,8 +50,10 @@ class CholmodBackend : public SymmetricBackend {
  private:
   void release();
   // Keeps the nested dissection of the block graph with fewer flops than the
-  // current factor, if any.
-  void tryNestedDissection(const std::vector<int>& blockDims, const std::vector<std::pair<int, int>>& blockPairs);
+  // current factor, if any. offsets: each block's first scalar and the total;
+  // columnPairs: each block column's pairs (indices into blockPairs) in row order.
+  void tryNestedDissection(const std::vector<int>& offsets, const std::vector<std::vector<int>>& columnPairs,
+                           const std::vector<std::pair<int, int>>& blockPairs);
   // The matrix analysed with this scalar permutation (postordered by CHOLMOD)
   // for one factorisation kind (CHOLMOD_SIMPLICIAL or CHOLMOD_SUPERNODAL), the
   // default settings kept; null when CHOLMOD fails. Common's flop and fill
