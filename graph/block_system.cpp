@@ -14,6 +14,14 @@ namespace lrsvo {
 
 namespace {
 
+// At most this many ranges of marginalised columns, each with its partial sums
+// of the free-free blocks: enough for the threads of a workstation, and fixed,
+// so that a sum's order depends on the problem alone.
+constexpr int kMaxCarriedRanges = 8;
+// A range of columns is worth its partial sums when its carried entries
+// outnumber them this many times.
+constexpr double kPartialSumsPayback = 8.0;
+
 // Active vertices (non-fixed, on at least one edge) in graph order, free ones
 // first when the Schur ordering is asked for.
 std::vector<Vertex*> orderVertices(const Graph& graph, const VertexPositions& positions, bool schurOrdering,
@@ -54,16 +62,19 @@ void stableSortBy(Iterator first, Iterator last, const Key& key) {
 // One pair (row <= col) of an edge's active vertices, in its column's list.
 struct PairSlot {
   int row;
+  int carrier;  // for a free-free pair of an edge on a marginalised vertex: that vertex's block, else -1
   Edge* edge;
   int a;  // the edge's local index of the row vertex
   int b;  // the edge's local index of the column vertex
 };
 
-// Calls visit(row, col, edge, a, b) for every pair of an edge's active
-// vertices with row <= col, edge by edge in graph order.
+// Calls visit(row, col, carrier, edge, a, b) for every pair of an edge's
+// active vertices with row <= col, edge by edge in graph order. The carrier of
+// a pair of free vertices (blocks below freeCount) is the edge's first
+// marginalised vertex, -1 when it has none or the pair is not free-free.
 template <typename Visit>
 void forEachPair(const Graph& graph, const VertexPositions& positions, const std::vector<int>& blockOfPosition,
-                 const Visit& visit) {
+                 int freeCount, const Visit& visit) {
   std::vector<int> edgeBlocks;  // block of each of an edge's vertices, -1 if inactive
   for (const auto& edgePtr : graph.edges()) {
     Edge* edge = edgePtr.get();
@@ -73,12 +84,15 @@ void forEachPair(const Graph& graph, const VertexPositions& positions, const std
       const int position = positions.find(edge->vertex(a));
       if (position >= 0) edgeBlocks[static_cast<std::size_t>(a)] = blockOfPosition[static_cast<std::size_t>(position)];
     }
+    int carrier = -1;
+    for (int block : edgeBlocks)
+      if (block >= freeCount && (carrier < 0 || block < carrier)) carrier = block;
     for (int a = 0; a < n; ++a) {
       const int row = edgeBlocks[static_cast<std::size_t>(a)];
       if (row < 0) continue;
       for (int b = 0; b < n; ++b) {
         const int col = edgeBlocks[static_cast<std::size_t>(b)];
-        if (col >= 0 && row <= col) visit(row, col, edge, a, b);
+        if (col >= 0 && row <= col) visit(row, col, col < freeCount ? carrier : -1, edge, a, b);
       }
     }
   }
@@ -89,11 +103,11 @@ void forEachPair(const Graph& graph, const VertexPositions& positions, const std
 // (the order H's blocks sum them in): no list of all pairs is sorted or
 // copied. columnStart gets the buckets' bounds (CSR).
 LargeArray<PairSlot> pairsByColumn(const Graph& graph, const VertexPositions& positions,
-                                   const std::vector<int>& blockOfPosition, int blockCount,
+                                   const std::vector<int>& blockOfPosition, int blockCount, int freeCount,
                                    std::vector<std::size_t>* columnStart) {
   std::vector<std::size_t>& start = *columnStart;
   start.assign(static_cast<std::size_t>(blockCount) + 1, 0);
-  forEachPair(graph, positions, blockOfPosition, [&](int row, int col, const Edge* edge, int a, int b) {
+  forEachPair(graph, positions, blockOfPosition, freeCount, [&](int row, int col, int, const Edge* edge, int a, int b) {
     if (row == col && a != b)
       throw Error(std::string("edge ") + edge->typeTag() + " names vertex " + std::to_string(edge->vertex(a)->id()) +
                   " twice");
@@ -102,9 +116,10 @@ LargeArray<PairSlot> pairsByColumn(const Graph& graph, const VertexPositions& po
   for (std::size_t c = 0; c + 1 < start.size(); ++c) start[c + 1] += start[c];
   LargeArray<PairSlot> slots(start.back());
   std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  forEachPair(graph, positions, blockOfPosition, [&](int row, int col, Edge* edge, int a, int b) {
-    slots[next[static_cast<std::size_t>(col)]++] = PairSlot{row, edge, a, b};
-  });
+  forEachPair(graph, positions, blockOfPosition, freeCount,
+              [&](int row, int col, int carrier, Edge* edge, int a, int b) {
+                slots[next[static_cast<std::size_t>(col)]++] = PairSlot{row, carrier, edge, a, b};
+              });
   for (std::size_t c = 0; c + 1 < start.size(); ++c)
     stableSortBy(slots.begin() + static_cast<std::ptrdiff_t>(start[c]),
                  slots.begin() + static_cast<std::ptrdiff_t>(start[c + 1]),
@@ -138,36 +153,45 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
   edges_.reserve(graph.edges().size());
   for (const auto& edge : graph.edges()) edges_.push_back(edge.get());
   std::vector<std::size_t> columnStart;
-  LargeArray<PairSlot> slots = pairsByColumn(graph, positions, blockOfPosition, blockCount(), &columnStart);
+  LargeArray<PairSlot> slots = pairsByColumn(graph, positions, blockOfPosition, blockCount(), freeCount_, &columnStart);
 
   // Block ids: the diagonal of vertex i is block i, the others follow column
   // by column, row by row (a column's diagonal, row == col, ends it);
   // colBlockIds_ lists every block in that order. The contributions go by
   // block id: the diagonals' first, in column order, then the others in the
-  // order of the walk.
+  // order of the walk. A carried pair goes to its carrier's list instead, in
+  // the order of the walk.
   for (int i = 0; i < blockCount(); ++i) blocks_.push_back(Block{i, i, 0});
   rowStart_.assign(blockCount() + 1, 0);
   colStart_.assign(blockCount() + 1, 0);
-  // Each block's contribution count at [id + 1], summed into the starts below.
+  // Each block's (each carrier's) contribution count at [id + 1], summed into
+  // the starts below.
   contributionStart_.assign(static_cast<std::size_t>(blockCount()) + 1, 0);
+  carriedStart_.assign(static_cast<std::size_t>(blockCount() - freeCount_) + 1, 0);
+  // The block of the pair at a slot, given whether the slot starts a pair.
+  int nextBlockId = blockCount();
+  const auto blockAt = [&](const PairSlot& slot, int c, bool newPair) {
+    return slot.row == c ? c : (newPair ? nextBlockId++ : nextBlockId - 1);
+  };
   for (int c = 0; c < blockCount(); ++c) {
     const auto first = slots.begin() + static_cast<std::ptrdiff_t>(columnStart[static_cast<std::size_t>(c)]);
     const auto last = slots.begin() + static_cast<std::ptrdiff_t>(columnStart[static_cast<std::size_t>(c) + 1]);
     for (auto slot = first; slot != last; ++slot) {
       const bool newPair = slot == first || slot->row != (slot - 1)->row;
-      if (slot->row == c) {
-        ++contributionStart_[static_cast<std::size_t>(c) + 1];
-      } else if (newPair) {
-        blocks_.push_back(Block{slot->row, c, 0});
-        contributionStart_.push_back(1);
-      } else {
-        ++contributionStart_.back();
-      }
+      const int id = blockAt(*slot, c, newPair);
       if (newPair) {
-        colBlockIds_.push_back(slot->row == c ? c : static_cast<int>(blocks_.size()) - 1);
+        if (id >= blockCount()) {
+          blocks_.push_back(Block{slot->row, c, 0});
+          contributionStart_.push_back(0);
+        }
+        colBlockIds_.push_back(id);
         ++rowStart_[slot->row + 1];
         ++colStart_[c + 1];
       }
+      if (slot->carrier >= 0)
+        ++carriedStart_[static_cast<std::size_t>(slot->carrier - freeCount_) + 1];
+      else
+        ++contributionStart_[static_cast<std::size_t>(id) + 1];
     }
   }
   for (int i = 0; i < blockCount(); ++i) {
@@ -175,13 +199,24 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
     colStart_[i + 1] += colStart_[i];
   }
   for (std::size_t k = 0; k < blocks_.size(); ++k) contributionStart_[k + 1] += contributionStart_[k];
-  contributions_.resize(slots.size());
+  for (std::size_t m = 0; m + 1 < carriedStart_.size(); ++m) carriedStart_[m + 1] += carriedStart_[m];
+  contributions_.resize(contributionStart_.back());
+  carried_.resize(carriedStart_.back());
   // The diagonals' contributions fill [0, start of the first other block).
   std::size_t nextDiagonal = 0, nextOther = contributionStart_[static_cast<std::size_t>(blockCount())];
-  for (int c = 0; c < blockCount(); ++c)
-    for (std::size_t e = columnStart[static_cast<std::size_t>(c)]; e < columnStart[static_cast<std::size_t>(c) + 1];
-         ++e)
-      contributions_[slots[e].row == c ? nextDiagonal++ : nextOther++] = {slots[e].edge, slots[e].a, slots[e].b};
+  std::vector<std::size_t> nextCarried(carriedStart_.begin(), carriedStart_.end() - 1);
+  nextBlockId = blockCount();
+  for (int c = 0; c < blockCount(); ++c) {
+    const std::size_t first = columnStart[static_cast<std::size_t>(c)];
+    for (std::size_t e = first; e < columnStart[static_cast<std::size_t>(c) + 1]; ++e) {
+      const PairSlot& slot = slots[e];
+      const int id = blockAt(slot, c, e == first || slot.row != slots[e - 1].row);
+      if (slot.carrier >= 0)
+        carried_[nextCarried[static_cast<std::size_t>(slot.carrier - freeCount_)]++] = {slot.edge, id, slot.a, slot.b};
+      else
+        contributions_[slot.row == c ? nextDiagonal++ : nextOther++] = {slot.edge, slot.a, slot.b};
+    }
+  }
   // Released before H's values are allocated, so the set-up's peak memory is
   // the larger of the two, not their sum.
   LargeArray<PairSlot>().swap(slots);
@@ -203,6 +238,50 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
   values_.assign(size, 0.0);
   gradient_ = Eigen::VectorXd::Zero(scalarCount_);
   diagonal_ = Eigen::VectorXd::Zero(scalarCount_);
+  freeValueCount_ = freeCount_ < blockCount()
+                        ? blocks_[static_cast<std::size_t>(colBlockIds_[colStart_[freeCount_]])].offset
+                        : values_.size();
+  splitMarginalisedColumns();
+}
+
+void BlockSystem::splitMarginalisedColumns() {
+  // A column's work: the entries its contributions sum.
+  const int marginalised = blockCount() - freeCount_;
+  std::vector<double> work(static_cast<std::size_t>(marginalised), 0.0);
+  double carriedWork = 0.0;
+  for (int m = 0; m < marginalised; ++m) {
+    const int column = freeCount_ + m;
+    for (int k : colBlocks(column)) {
+      const Block& block = blocks_[static_cast<std::size_t>(k)];
+      work[m] +=
+          static_cast<double>(contributionStart_[k + 1] - contributionStart_[k]) * dims_[block.row] * dims_[block.col];
+    }
+    for (std::size_t c = carriedStart_[m]; c < carriedStart_[m + 1]; ++c) {
+      const Block& block = blocks_[static_cast<std::size_t>(carried_[c].block)];
+      const double entries = static_cast<double>(dims_[block.row]) * dims_[block.col];
+      work[m] += entries;
+      carriedWork += entries;
+    }
+  }
+  // Each range zeroes its partial sums and each free block adds them all, so
+  // a range pays where its carried entries outnumber the sums several times.
+  partialSize_ = carried_.empty() ? 0 : freeValueCount_ + static_cast<std::size_t>(freeScalarCount());
+  int ranges = marginalised > 0 ? 1 : 0;
+  if (partialSize_ > 0)
+    ranges = static_cast<int>(std::clamp(carriedWork / (kPartialSumsPayback * static_cast<double>(partialSize_)), 1.0,
+                                         static_cast<double>(std::min(kMaxCarriedRanges, marginalised))));
+  partialSums_.assign(static_cast<std::size_t>(ranges) * partialSize_, 0.0);
+
+  double total = 0.0;
+  for (double w : work) total += w;
+  marginalisedRanges_.assign(1, freeCount_);
+  double done = 0.0;
+  for (int m = 0; m + 1 < marginalised && static_cast<int>(marginalisedRanges_.size()) < ranges; ++m) {
+    done += work[m];
+    if (done >= total * static_cast<double>(marginalisedRanges_.size()) / ranges)
+      marginalisedRanges_.push_back(freeCount_ + m + 1);
+  }
+  if (ranges > 0) marginalisedRanges_.push_back(blockCount());
 }
 
 int BlockSystem::blockOf(const Vertex* vertex) const {
@@ -217,8 +296,13 @@ double BlockSystem::fill(int threads) {
 
   // Column by column: the blocks of one column share their edges (a point's
   // W blocks and its V block), so each edge is read from memory once per
-  // column and found in cache for the column's other blocks.
-  parallelFor(0, blockCount(), threads, [&](int column) {
+  // column and found in cache for the column's other blocks. The marginalised
+  // columns first, range by range: their edges' free-free shares are summed
+  // there, while the edges are in cache, so the free columns (a camera's
+  // block, whose edges lie all over memory) only add up the ranges' sums.
+  parallelFor(0, static_cast<int>(marginalisedRanges_.size()) - 1, threads, 1,
+              [&](int range) { fillMarginalisedRange(range); });
+  parallelFor(0, freeCount_, threads, [&](int column) {
     for (int k : colBlocks(column)) fillBlock(k);
   });
 
@@ -232,21 +316,43 @@ void BlockSystem::fillBlock(int k) {
   const Block& block = blocks_[k];
   double* target = values(block);
   const int rows = dims_[block.row];
-  std::fill(target, target + rows * dims_[block.col], 0.0);
-  const std::span<const Contribution> edges = slice(contributions_, contributionStart_, k);
-  if (k >= blockCount()) {
-    for (const Contribution& c : edges) c.edge->addHessianBlock(c.a, c.b, target, rows);
-    return;
+  const std::size_t size = static_cast<std::size_t>(rows) * dims_[block.col];
+  std::fill(target, target + size, 0.0);
+  // A diagonal block's edges also make its gradient, taken while each edge is in cache.
+  const bool diagonal = k < blockCount();
+  double* g = diagonal ? gradient_.data() + offsets_[k] : nullptr;
+  if (diagonal) std::fill(g, g + rows, 0.0);
+  for (const Contribution& c : slice(contributions_, contributionStart_, k)) {
+    c.edge->addHessianBlock(c.a, c.b, target, rows);
+    if (diagonal) c.edge->addGradient(c.a, g);
   }
-  // Diagonal block k: the edges on vertex k, which also make its gradient,
-  // taken while each edge is in cache.
-  double* g = gradient_.data() + offsets_[k];
-  std::fill(g, g + rows, 0.0);
-  for (const Contribution& c : edges) {
-    c.edge->addHessianBlock(c.a, c.a, target, rows);
-    c.edge->addGradient(c.a, g);
+  if (block.col < freeCount_ && partialSize_ > 0) {
+    const int ranges = static_cast<int>(marginalisedRanges_.size()) - 1;
+    for (int r = 0; r < ranges; ++r) {
+      const double* sums = partialSums(r);
+      for (std::size_t i = 0; i < size; ++i) target[i] += sums[block.offset + i];
+      if (diagonal)
+        for (int d = 0; d < rows; ++d) g[d] += sums[freeValueCount_ + offsets_[k] + d];
+    }
   }
-  for (int d = 0; d < rows; ++d) diagonal_[offsets_[k] + d] = target[d * rows + d];
+  if (diagonal)
+    for (int d = 0; d < rows; ++d) diagonal_[offsets_[k] + d] = target[d * rows + d];
+}
+
+void BlockSystem::fillMarginalisedRange(int r) {
+  double* sums = partialSize_ > 0 ? partialSums(r) : nullptr;
+  if (sums) std::fill(sums, sums + partialSize_, 0.0);
+  for (int column = marginalisedRanges_[r]; column < marginalisedRanges_[r + 1]; ++column) {
+    for (int k : colBlocks(column)) fillBlock(k);
+    const std::size_t m = static_cast<std::size_t>(column - freeCount_);
+    for (std::size_t c = carriedStart_[m]; c < carriedStart_[m + 1]; ++c) {
+      const CarriedContribution& carried = carried_[c];
+      const Block& block = blocks_[static_cast<std::size_t>(carried.block)];
+      carried.edge->addHessianBlock(carried.a, carried.b, sums + block.offset, dims_[block.row]);
+      if (carried.block < blockCount())
+        carried.edge->addGradient(carried.a, sums + freeValueCount_ + offsets_[block.row]);
+    }
+  }
 }
 
 double BlockSystem::cost(int threads) const {

@@ -88,8 +88,26 @@ class BlockSystem {
     int b;  // the edge's local index of the column vertex
   };
 
+  // A free-free block's share from an edge on a marginalised vertex: summed in
+  // that vertex's column pass, while the edge is in cache, into the partial
+  // sums of the vertex's range of columns.
+  struct CarriedContribution {
+    Edge* edge;
+    int block;
+    int a;
+    int b;
+  };
+
   // Sums block k of H from its edges; a diagonal block also its gradient and diagonal.
   void fillBlock(int k);
+  // Splits the marginalised columns into ranges of about equal work, as many
+  // as pay for their partial sums (at most kMaxCarriedRanges), fixed by the
+  // structure alone so that sums do not depend on the thread count.
+  void splitMarginalisedColumns();
+  // The marginalised columns of range r: their blocks, and their carried
+  // contributions summed into the range's partial sums.
+  void fillMarginalisedRange(int r);
+  double* partialSums(int range) { return partialSums_.data() + static_cast<std::size_t>(range) * partialSize_; }
   // Entries [start[i], start[i + 1]) of a list stored by rows (CSR).
   template <typename Items>
   static std::span<const typename Items::value_type> slice(const Items& items, const std::vector<std::size_t>& start,
@@ -113,6 +131,15 @@ class BlockSystem {
   std::vector<int> heldScalars_;  // since the last fill()
   std::vector<double> savedEstimates_;
   std::vector<std::size_t> estimateOffsets_;
+  // Free-free blocks come first in values_ (the layout is by column, free
+  // columns first): their values are [0, freeValueCount_).
+  std::size_t freeValueCount_ = 0;
+  std::vector<std::size_t> carriedStart_;  // CSR by marginalised column
+  LargeArray<CarriedContribution> carried_;
+  std::vector<int> marginalisedRanges_;  // bounds of the ranges of marginalised columns
+  // Per range: the free-free values, then the free gradient.
+  std::size_t partialSize_ = 0;
+  std::vector<double> partialSums_;
 };
 
 }  // namespace lrsvo

@@ -77,6 +77,48 @@ TEST(BlockSystem, GradientIsTheCostsDerivative) {
   }
 }
 
+// The Schur ordering sums the free vertices' shares of edges on points in the
+// points' column passes, split into ranges of partial sums; the natural
+// ordering sums every block from its own edges. Both must give the same H, g
+// and diagonal up to the rounding of sums taken in another order: each entry
+// sums at most a few hundred products, so the two differ by a few hundred
+// units of rounding of its largest terms, far below 1e-12 of H's largest entry.
+TEST(BlockSystem, SchurOrderingSumsTheSameSystem) {
+  ToyOptions options;
+  options.points = 400;  // enough columns of points for several ranges of partial sums
+  options.sharedScale = true;
+  options.fixedPoints = 3;
+  options.randomInformation = true;
+  options.kernel = "cycle";
+  options.outlierFraction = 0.1;
+  Graph graph = makeToyProblem(options);
+  BlockSystem natural(graph, false), schur(graph, true);
+  natural.fill(1);
+  schur.fill(2);
+  ASSERT_EQ(natural.scalarCount(), schur.scalarCount());
+
+  // Scalar index in the natural system of each scalar of the Schur-ordered one.
+  std::vector<int> toNatural(static_cast<std::size_t>(schur.scalarCount()));
+  for (int i = 0; i < schur.blockCount(); ++i) {
+    const int j = natural.blockOf(schur.vertex(i));
+    ASSERT_GE(j, 0);
+    for (int d = 0; d < schur.dim(i); ++d)
+      toNatural[static_cast<std::size_t>(schur.offset(i) + d)] = natural.offset(j) + d;
+  }
+  const Eigen::MatrixXd hNatural = denseHessian(natural), hSchur = denseHessian(schur);
+  const double scale = hNatural.cwiseAbs().maxCoeff();
+  double largestDifference = 0.0;
+  for (int a = 0; a < schur.scalarCount(); ++a) {
+    const int na = toNatural[static_cast<std::size_t>(a)];
+    EXPECT_NEAR(schur.gradient()[a], natural.gradient()[na], 1e-12 * natural.gradient().cwiseAbs().maxCoeff());
+    EXPECT_EQ(schur.diagonal()[a], hSchur(a, a));
+    for (int b = 0; b < schur.scalarCount(); ++b)
+      largestDifference =
+          std::max(largestDifference, std::abs(hSchur(a, b) - hNatural(na, toNatural[static_cast<std::size_t>(b)])));
+  }
+  EXPECT_LE(largestDifference, 1e-12 * scale);
+}
+
 // At a zero-residual point the Gauss-Newton H is the exact Hessian of the cost.
 TEST(BlockSystem, HessianAtAZeroResidualIsTheCostsSecondDerivative) {
   ToyOptions options;
