@@ -71,7 +71,7 @@ void run(GraphCommandOptions& o) {
   solverOptions.maxIterations = o.maxIterations;
   solverOptions.verbose = o.verbose;
   solverOptions.lm.geodesicAcceleration = o.geodesicAcceleration;
-  const Optimizer optimizer(solverOptions);
+  Optimizer optimizer(solverOptions);
 
   Graph graph = loadOrGenerate(o);
   if (graph.empty()) throw Error("graph: " + o.file + " has no vertices");

@@ -15,6 +15,9 @@ class BarrierEdge : public Edge {
   BarrierEdge() { vertices_.assign(1, nullptr); }
   BarrierEdge(Vertex* vertex, int index, double lower, double upper, double mu);
 
+  // The barrier's weight, changed between the rounds of an interior-point schedule.
+  void setMu(double mu) { mu_ = mu; }
+
   int vertexCount() const override { return 1; }
   const char* typeTag() const override { return kTypeTag; }
   bool acceptsVertex(int, const Vertex& vertex) const override { return vertex.isEuclidean(); }

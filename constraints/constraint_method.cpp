@@ -4,7 +4,6 @@
 #include <string>
 
 #include "lrsvo/graph/error.h"
-#include "lrsvo/graph/optimizer.h"
 #include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
@@ -27,8 +26,13 @@ void ConstraintMethod::enforceStart(bool interior) const {
 }
 
 SolverSummary ConstraintMethod::solve(Graph& graph, const SolverOptions& options) {
+  Optimizer optimizer(options);
+  return solveWith(optimizer, graph);
+}
+
+SolverSummary ConstraintMethod::solveWith(Optimizer& optimizer, Graph& graph) {
   const double initialCost = graph.cost();
-  SolverSummary summary = Optimizer(options).optimize(graph, *this);
+  SolverSummary summary = optimizer.optimize(graph, *this);
   summary.initialCost = initialCost;
   summary.finalCost = graph.cost();
   return summary;

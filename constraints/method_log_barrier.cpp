@@ -21,17 +21,26 @@ class LogBarrier : public ConstraintMethod {
     declare("rounds", &rounds_, "outer solves, each from the last one's iterate (1: mu fixed)");
   }
 
+  // The rounds share one optimizer and one set of barrier edges (only mu
+  // changes), so every round after the first solves the structure the first
+  // one set up.
   SolverSummary solve(Graph& graph, const SolverOptions& options) override {
     const double initialCost = graph.cost();
     SolverSummary total;
-    mu_ = startMu_;
-    for (round_ = 0; round_ < std::max(1, rounds_); ++round_, mu_ *= decrease_) {
-      const SolverSummary part = ConstraintMethod::solve(graph, options);
-      if (round_ == 0)
-        total = part;
-      else
-        appendSummary(total, part);
+    {
+      Optimizer optimizer(options);
+      mu_ = startMu_;
+      keepEdges_ = true;
+      const EdgeRemoval removal{*this, graph};
+      for (round_ = 0; round_ < std::max(1, rounds_); ++round_, mu_ *= decrease_) {
+        const SolverSummary part = solveWith(optimizer, graph);
+        if (round_ == 0)
+          total = part;
+        else
+          appendSummary(total, part);
+      }
     }
+    // The graph's own costs, the barrier edges taken out.
     total.initialCost = initialCost;
     total.finalCost = graph.cost();
     return total;
@@ -41,6 +50,10 @@ class LogBarrier : public ConstraintMethod {
     // Later rounds start from the previous round's iterate, strictly inside
     // because its barrier cost was finite, however close to a bound.
     if (round_ == 0) enforceStart(true);
+    if (!edges_.empty()) {
+      for (BarrierEdge* edge : edges_) edge->setMu(mu_);
+      return;
+    }
     for (const Bounds::Bound& bound : bounds_.all()) {
       if (bound.vertex->fixed()) continue;
       edges_.push_back(
@@ -48,18 +61,35 @@ class LogBarrier : public ConstraintMethod {
     }
   }
 
+  // A solve outside solve()'s rounds (an Optimizer given this method directly)
+  // takes its edges out again at once.
   void end(Graph& graph) override {
+    if (!keepEdges_) removeEdges(graph);
+  }
+
+ private:
+  // Takes the barrier edges out of the graph when solve() leaves, however it leaves.
+  struct EdgeRemoval {
+    LogBarrier& method;
+    Graph& graph;
+    ~EdgeRemoval() {
+      method.keepEdges_ = false;
+      method.removeEdges(graph);
+    }
+  };
+
+  void removeEdges(Graph& graph) {
     for (const Edge* edge : edges_) graph.removeEdge(edge);
     edges_.clear();
   }
 
- private:
   double startMu_ = 1e-2;
   double decrease_ = 0.1;
   int rounds_ = 3;
   double mu_ = 0.0;
   int round_ = 0;
-  std::vector<const Edge*> edges_;
+  bool keepEdges_ = false;  // within solve(): the edges stay from round to round
+  std::vector<BarrierEdge*> edges_;
 };
 
 }  // namespace

@@ -68,30 +68,46 @@ struct PairSlot {
   int b;  // the edge's local index of the column vertex
 };
 
-// Calls visit(row, col, carrier, edge, a, b) for every pair of an edge's
-// active vertices with row <= col, edge by edge in graph order. The carrier of
-// a pair of free vertices (blocks below freeCount) is the edge's first
-// marginalised vertex, -1 when it has none or the pair is not free-free.
-template <typename Visit>
-void forEachPair(const Graph& graph, const VertexPositions& positions, const std::vector<int>& blockOfPosition,
-                 int freeCount, const Visit& visit) {
-  std::vector<int> edgeBlocks;  // block of each of an edge's vertices, -1 if inactive
-  for (const auto& edgePtr : graph.edges()) {
-    Edge* edge = edgePtr.get();
+// Each edge's vertex count, then the block of each of its vertices (-1 for a
+// fixed one), edge by edge in graph order.
+LargeArray<int> edgeVertexBlocks(const Graph& graph, const VertexPositions& positions,
+                                 const std::vector<int>& blockOfPosition) {
+  std::size_t size = 0;
+  for (const auto& edge : graph.edges()) size += 1 + static_cast<std::size_t>(edge->vertexCount());
+  LargeArray<int> blocks(size);
+  std::size_t next = 0;
+  for (const auto& edge : graph.edges()) {
     const int n = edge->vertexCount();
-    edgeBlocks.assign(static_cast<std::size_t>(n), -1);
+    blocks[next++] = n;
     for (int a = 0; a < n; ++a) {
       const int position = positions.find(edge->vertex(a));
-      if (position >= 0) edgeBlocks[static_cast<std::size_t>(a)] = blockOfPosition[static_cast<std::size_t>(position)];
+      blocks[next++] = position >= 0 ? blockOfPosition[static_cast<std::size_t>(position)] : -1;
     }
+  }
+  return blocks;
+}
+
+// Calls visit(row, col, carrier, edge, a, b) for every pair of an edge's
+// active vertices with row <= col, edge by edge in graph order, from the
+// edges' vertex blocks (edgeVertexBlocks). The carrier of a pair of free
+// vertices (blocks below freeCount) is the edge's first marginalised vertex,
+// -1 when it has none or the pair is not free-free.
+template <typename Visit>
+void forEachPair(const Graph& graph, const LargeArray<int>& vertexBlocks, int freeCount, const Visit& visit) {
+  const int* next = vertexBlocks.data();
+  for (const auto& edgePtr : graph.edges()) {
+    Edge* edge = edgePtr.get();
+    const int n = *next++;
+    const int* edgeBlocks = next;
+    next += n;
     int carrier = -1;
-    for (int block : edgeBlocks)
-      if (block >= freeCount && (carrier < 0 || block < carrier)) carrier = block;
+    for (int a = 0; a < n; ++a)
+      if (edgeBlocks[a] >= freeCount && (carrier < 0 || edgeBlocks[a] < carrier)) carrier = edgeBlocks[a];
     for (int a = 0; a < n; ++a) {
-      const int row = edgeBlocks[static_cast<std::size_t>(a)];
+      const int row = edgeBlocks[a];
       if (row < 0) continue;
       for (int b = 0; b < n; ++b) {
-        const int col = edgeBlocks[static_cast<std::size_t>(b)];
+        const int col = edgeBlocks[b];
         if (col >= 0 && row <= col) visit(row, col, col < freeCount ? carrier : -1, edge, a, b);
       }
     }
@@ -102,12 +118,11 @@ void forEachPair(const Graph& graph, const VertexPositions& positions, const std
 // place) and sorted by row within its column, each pair's edges in edge order
 // (the order H's blocks sum them in): no list of all pairs is sorted or
 // copied. columnStart gets the buckets' bounds (CSR).
-LargeArray<PairSlot> pairsByColumn(const Graph& graph, const VertexPositions& positions,
-                                   const std::vector<int>& blockOfPosition, int blockCount, int freeCount,
-                                   std::vector<std::size_t>* columnStart) {
+LargeArray<PairSlot> pairsByColumn(const Graph& graph, const LargeArray<int>& vertexBlocks, int blockCount,
+                                   int freeCount, std::vector<std::size_t>* columnStart) {
   std::vector<std::size_t>& start = *columnStart;
   start.assign(static_cast<std::size_t>(blockCount) + 1, 0);
-  forEachPair(graph, positions, blockOfPosition, freeCount, [&](int row, int col, int, const Edge* edge, int a, int b) {
+  forEachPair(graph, vertexBlocks, freeCount, [&](int row, int col, int, const Edge* edge, int a, int b) {
     if (row == col && a != b)
       throw Error(std::string("edge ") + edge->typeTag() + " names vertex " + std::to_string(edge->vertex(a)->id()) +
                   " twice");
@@ -116,10 +131,9 @@ LargeArray<PairSlot> pairsByColumn(const Graph& graph, const VertexPositions& po
   for (std::size_t c = 0; c + 1 < start.size(); ++c) start[c + 1] += start[c];
   LargeArray<PairSlot> slots(start.back());
   std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  forEachPair(graph, positions, blockOfPosition, freeCount,
-              [&](int row, int col, int carrier, Edge* edge, int a, int b) {
-                slots[next[static_cast<std::size_t>(col)]++] = PairSlot{row, carrier, edge, a, b};
-              });
+  forEachPair(graph, vertexBlocks, freeCount, [&](int row, int col, int carrier, Edge* edge, int a, int b) {
+    slots[next[static_cast<std::size_t>(col)]++] = PairSlot{row, carrier, edge, a, b};
+  });
   for (std::size_t c = 0; c + 1 < start.size(); ++c)
     stableSortBy(slots.begin() + static_cast<std::ptrdiff_t>(start[c]),
                  slots.begin() + static_cast<std::ptrdiff_t>(start[c + 1]),
@@ -129,7 +143,7 @@ LargeArray<PairSlot> pairsByColumn(const Graph& graph, const VertexPositions& po
 
 }  // namespace
 
-BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
+BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) : schurOrdering_(schurOrdering) {
   if (graph.empty()) throw Error("optimise: the graph has no vertices");
   if (graph.edges().empty()) throw Error("optimise: the graph has no edges");
   std::vector<const Vertex*> graphVertices;
@@ -152,8 +166,9 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) {
 
   edges_.reserve(graph.edges().size());
   for (const auto& edge : graph.edges()) edges_.push_back(edge.get());
+  edgeVertexBlocks_ = edgeVertexBlocks(graph, positions, blockOfPosition);
   std::vector<std::size_t> columnStart;
-  LargeArray<PairSlot> slots = pairsByColumn(graph, positions, blockOfPosition, blockCount(), freeCount_, &columnStart);
+  LargeArray<PairSlot> slots = pairsByColumn(graph, edgeVertexBlocks_, blockCount(), freeCount_, &columnStart);
 
   // Block ids: the diagonal of vertex i is block i, the others follow column
   // by column, row by row (a column's diagonal, row == col, ends it);
@@ -282,6 +297,30 @@ void BlockSystem::splitMarginalisedColumns() {
       marginalisedRanges_.push_back(freeCount_ + m + 1);
   }
   if (ranges > 0) marginalisedRanges_.push_back(blockCount());
+}
+
+bool BlockSystem::describes(const Graph& graph, bool schurOrdering) const {
+  if (schurOrdering != schurOrdering_ || graph.edges().size() != edges_.size()) return false;
+  const int* next = edgeVertexBlocks_.data();
+  for (std::size_t e = 0; e < edges_.size(); ++e) {
+    const Edge* edge = graph.edges()[e].get();
+    const int n = edge->vertexCount();
+    if (edge != edges_[e] || *next++ != n) return false;
+    for (int a = 0; a < n; ++a) {
+      const int block = *next++;
+      const Vertex* vertex = edge->vertex(a);
+      // A vertex on an edge is inactive exactly when it is fixed.
+      if (block < 0) {
+        if (!vertex->fixed()) return false;
+        continue;
+      }
+      if (vertex != vertices_[static_cast<std::size_t>(block)] || vertex->fixed() ||
+          vertex->dimension() != dims_[static_cast<std::size_t>(block)] ||
+          (schurOrdering_ && vertex->marginalized() != (block >= freeCount_)))
+        return false;
+    }
+  }
+  return true;
 }
 
 int BlockSystem::blockOf(const Vertex* vertex) const {

@@ -27,6 +27,12 @@ class BlockSystem {
   // schurOrdering: put marginalised vertices last (else treat all alike).
   BlockSystem(const Graph& graph, bool schurOrdering);
 
+  // True when the graph has the structure this system was built for: the same
+  // edges in the same order, on the same vertices, each as fixed, marginalised
+  // and of the dimension it was. Such a graph may be solved on this system
+  // (and a linear solver's analysis of it) again: O(edges), no allocation.
+  bool describes(const Graph& graph, bool schurOrdering) const;
+
   int blockCount() const { return static_cast<int>(vertices_.size()); }
   int freeCount() const { return freeCount_; }
   int dim(int block) const { return dims_[block]; }
@@ -115,7 +121,10 @@ class BlockSystem {
     return {items.data() + start[i], start[i + 1] - start[i]};
   }
 
+  bool schurOrdering_;
   std::vector<Edge*> edges_;
+  // Per edge in graph order: its vertex count, then its vertices' blocks (-1: fixed).
+  LargeArray<int> edgeVertexBlocks_;
   std::vector<Vertex*> vertices_;
   std::unordered_map<const Vertex*, int> blockIndex_;
   std::vector<int> dims_, offsets_;

@@ -51,12 +51,16 @@ class OptimizationContext {
   void record(IterationRecord record);
 
  private:
+  // The summary's Schur and factorisation times: this solve's share of the solver's totals.
+  void recordSolverTimes();
+
   BlockSystem& system_;
   LinearSolver& solver_;
   ConstraintHandler& constraints_;
   const SolverOptions& options_;
   SolverSummary& summary_;
-  Stopwatch stopwatch_;  // since the context was made
+  const LinearSolverTimes solverTimesAtStart_;  // the solver's totals before this solve (it may be reused)
+  Stopwatch stopwatch_;                         // since the context was made
   double lastRecordSeconds_ = 0.0;
   bool stepSolvesTheSystem_ = true;
   bool stepAdjusted_ = false;  // the constraints shaped the last step

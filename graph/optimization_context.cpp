@@ -7,7 +7,17 @@ namespace lrsvo {
 
 OptimizationContext::OptimizationContext(BlockSystem& system, LinearSolver& solver, ConstraintHandler& constraints,
                                          const SolverOptions& options, SolverSummary& summary)
-    : system_(system), solver_(solver), constraints_(constraints), options_(options), summary_(summary) {}
+    : system_(system),
+      solver_(solver),
+      constraints_(constraints),
+      options_(options),
+      summary_(summary),
+      solverTimesAtStart_(solver.times()) {}
+
+void OptimizationContext::recordSolverTimes() {
+  summary_.schurSeconds = solver_.times().schurSeconds - solverTimesAtStart_.schurSeconds;
+  summary_.factorizeSeconds = solver_.times().factorizeSeconds - solverTimesAtStart_.factorizeSeconds;
+}
 
 double OptimizationContext::linearize() {
   const Stopwatch start;
@@ -21,8 +31,7 @@ bool OptimizationContext::solveStep(const Eigen::VectorXd& shift, Eigen::VectorX
   system_.setDiagonalShift(shift);
   const Eigen::VectorXd rhs = -system_.gradient();
   const bool ok = solver_.solve(system_, rhs, dx, options_.threads);
-  summary_.schurSeconds = solver_.times().schurSeconds;
-  summary_.factorizeSeconds = solver_.times().factorizeSeconds;
+  recordSolverTimes();
   // A step the constraints adjusted, or an iterative solver's, does not solve
   // (H + D) dx = -g exactly.
   stepAdjusted_ = ok && constraints_.adjustStep(system_, dx);
@@ -37,8 +46,7 @@ bool OptimizationContext::accelerateStep(const Eigen::VectorXd& shift, double h,
   summary_.costSeconds += start.seconds();
   Eigen::VectorXd acceleration;
   const bool ok = solver_.solve(system_, rhs, acceleration, options_.threads);
-  summary_.schurSeconds = solver_.times().schurSeconds;
-  summary_.factorizeSeconds = solver_.times().factorizeSeconds;
+  recordSolverTimes();
   if (!ok || !acceleration.allFinite()) return false;
   // The damping's metric: diag(H) clamped in multiplicative damping (lambda cancels), plain in additive.
   const double velocity = dx.dot(shift.cwiseProduct(dx));

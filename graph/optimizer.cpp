@@ -1,6 +1,7 @@
 #include "lrsvo/graph/optimizer.h"
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -79,32 +80,60 @@ void SolverOptions::validate() const {
   if (maxIterations < 0) throw Error("solver: max iterations must not be negative");
 }
 
-Optimizer::Optimizer(SolverOptions options) : options_(std::move(options)) { options_.validate(); }
+// The block system of the last solve and the linear solver that analysed it.
+struct Optimizer::Prepared {
+  std::unique_ptr<LinearSolver> solver;
+  std::unique_ptr<BlockSystem> system;
+};
 
-SolverSummary Optimizer::optimize(Graph& graph) const {
+Optimizer::Optimizer(SolverOptions options) : options_(std::move(options)) { options_.validate(); }
+Optimizer::~Optimizer() = default;
+Optimizer::Optimizer(const Optimizer& other) : options_(other.options_) {}
+Optimizer& Optimizer::operator=(const Optimizer& other) {
+  if (this != &other) {
+    options_ = other.options_;
+    prepared_.reset();
+  }
+  return *this;
+}
+Optimizer::Optimizer(Optimizer&&) noexcept = default;
+Optimizer& Optimizer::operator=(Optimizer&&) noexcept = default;
+
+void Optimizer::releaseStructure() { prepared_.reset(); }
+
+SolverSummary Optimizer::optimize(Graph& graph) {
   ConstraintHandler unconstrained;
   return optimize(graph, unconstrained);
 }
 
-SolverSummary Optimizer::optimize(Graph& graph, ConstraintHandler& constraints) const {
+SolverSummary Optimizer::optimize(Graph& graph, ConstraintHandler& constraints) {
   const Stopwatch start;
   if (graph.empty()) throw Error("optimise: the graph has no vertices");
   checkEstimatesFinite(graph);
   auto algorithm = Registry<OptimizationAlgorithm>::instance().create(options_.algorithm);
-  auto solver = Registry<LinearSolver>::instance().create(options_.linearSolver);
 
   ConstraintScope scope(constraints, graph);
-  BlockSystem system(graph, solver->usesSchurOrdering());
-  solver->analyze(system);
+  const bool reused = prepared_ && prepared_->system->describes(graph, prepared_->solver->usesSchurOrdering());
+  if (!reused) {
+    // The old structure goes first, so that the two are never held at once.
+    prepared_.reset();
+    auto solver = Registry<LinearSolver>::instance().create(options_.linearSolver);
+    auto system = std::make_unique<BlockSystem>(graph, solver->usesSchurOrdering());
+    solver->analyze(*system);
+    prepared_ = std::make_unique<Prepared>(Prepared{std::move(solver), std::move(system)});
+  }
+  BlockSystem& system = *prepared_->system;
+  LinearSolver& solver = *prepared_->solver;
 
   SolverSummary summary = beginSummary(options_.name(), graph, system, options_.threads);
-  const FactorizationInfo factorization = solver->factorization();
+  summary.structureReused = reused;
+  const FactorizationInfo factorization = solver.factorization();
   summary.ordering = factorization.ordering;
   summary.factorizationFlops = factorization.flops;
   if (!std::isfinite(summary.initialCost)) throwNonFiniteCost(graph);
   summary.setupSeconds = start.seconds();
 
-  OptimizationContext context(system, *solver, constraints, options_, summary);
+  OptimizationContext context(system, solver, constraints, options_, summary);
   context.record(IterationRecord{.iteration = 0, .cost = summary.initialCost, .lambda = 0.0});
   algorithm->run(context);
   summary.totalSeconds = start.seconds();

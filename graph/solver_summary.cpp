@@ -52,8 +52,9 @@ std::string SolverSummary::fullReport() const {
                   it.iterationSeconds, it.cumulativeSeconds);
   out << format("Initial cost %.6e, final cost %.6e, change %.6e\n", initialCost, finalCost, initialCost - finalCost);
   out << format("Steps: %d successful, %d unsuccessful\n", successfulSteps, unsuccessfulSteps);
-  out << format("Time (s): setup %.4f, linearize %.4f, schur %.4f, factorize %.4f, cost %.4f, total %.4f\n",
-                setupSeconds, linearizeSeconds, schurSeconds, factorizeSeconds, costSeconds, totalSeconds);
+  out << format("Time (s): setup %.4f%s, linearize %.4f, schur %.4f, factorize %.4f, cost %.4f, total %.4f\n",
+                setupSeconds, structureReused ? " (structure reused)" : "", linearizeSeconds, schurSeconds,
+                factorizeSeconds, costSeconds, totalSeconds);
   if (!ordering.empty())
     out << format("Linear system: %s ordering, %.3e flops per factorisation\n", ordering.c_str(), factorizationFlops);
   out << "Termination: " << terminationName(termination) << (message.empty() ? "" : " (" + message + ")") << '\n';
@@ -78,6 +79,7 @@ std::string SolverSummary::toJson() const {
       {"total_time_s", totalSeconds},
       {"ordering", ordering},
       {"factorization_flops", factorizationFlops},
+      {"structure_reused", structureReused},
       {"phase_time_s",
        {{"setup", setupSeconds},
         {"linearize", linearizeSeconds},

@@ -47,7 +47,10 @@ struct SolverSummary {
   int unsuccessfulSteps = 0;
   Termination termination = Termination::kMaxIterations;
   std::string message;
-  double setupSeconds = 0.0;      // structure, ordering, symbolic analysis
+  double setupSeconds = 0.0;  // structure, ordering, symbolic analysis
+  // The block structure and symbolic analysis came from the optimizer's
+  // previous solve of the same structure (setupSeconds is then only the check).
+  bool structureReused = false;
   double linearizeSeconds = 0.0;  // residuals, Jacobians and block sums
   double schurSeconds = 0.0;
   double factorizeSeconds = 0.0;

@@ -166,7 +166,7 @@ SolverSummary optimize(Graph& graph, const std::string& solver, int maxIteration
   options.lm.geodesicAcceleration = geodesicAcceleration;
   options.verbose = verbose;
   if (bounds.empty()) {
-    const Optimizer optimizer(options);
+    Optimizer optimizer(options);
     py::gil_scoped_release release;
     return optimizer.optimize(graph);
   }

@@ -413,6 +413,24 @@ TEST(Constraints, LogBarrierRoundsContinueFromAnIterateNearAnActiveBound) {
   EXPECT_TRUE(costsNeverRise(solution("log_barrier", Box::kActive).summary)) << "kProject, VO window";
 }
 
+// The rounds keep one set of barrier edges in the graph (only mu changes
+// between them, so every round solves the structure the first one set up);
+// the solve takes them out again and reports the graph's own costs.
+TEST(Constraints, LogBarrierRoundsLeaveTheGraphAsItWas) {
+  WindowProblem problem = makeWindowProblem(windowFor(Size::kSmall, Box::kActive));
+  std::vector<const Edge*> before;
+  for (const auto& edge : problem.graph.edges()) before.push_back(edge.get());
+  const double initialCost = problem.graph.cost();
+  const SolverSummary summary =
+      optimizeWithBounds(problem.graph, tightOptions(), problem.extrinsicBounds, "log_barrier:rounds=3");
+  std::vector<const Edge*> after;
+  for (const auto& edge : problem.graph.edges()) after.push_back(edge.get());
+  EXPECT_EQ(after, before);
+  EXPECT_EQ(summary.initialCost, initialCost);
+  EXPECT_EQ(summary.finalCost, problem.graph.cost());
+  EXPECT_TRUE(problem.extrinsicBounds.hold());
+}
+
 }  // namespace
 }  // namespace lrsvo
 
