@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include "lrsvo/graph/block_kernels.h"
@@ -78,6 +79,9 @@ LargeArray<int> edgeVertexBlocks(const Graph& graph, const VertexPositions& posi
   std::size_t next = 0;
   for (const auto& edge : graph.edges()) {
     const int n = edge->vertexCount();
+    if (n > std::numeric_limits<std::int16_t>::max())
+      throw Error(std::string("edge ") + edge->typeTag() + " joins " + std::to_string(n) + " vertices; at most " +
+                  std::to_string(std::numeric_limits<std::int16_t>::max()) + " are supported");
     blocks[next++] = n;
     for (int a = 0; a < n; ++a) {
       const int position = positions.find(edge->vertex(a));
@@ -227,7 +231,8 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) : schurOrdering
       const PairSlot& slot = slots[e];
       const int id = blockAt(slot, c, e == first || slot.row != slots[e - 1].row);
       if (slot.carrier >= 0)
-        carried_[nextCarried[static_cast<std::size_t>(slot.carrier - freeCount_)]++] = {slot.edge, id, slot.a, slot.b};
+        carried_[nextCarried[static_cast<std::size_t>(slot.carrier - freeCount_)]++] = {
+            slot.edge, id, static_cast<std::int16_t>(slot.a), static_cast<std::int16_t>(slot.b)};
       else
         contributions_[slot.row == c ? nextDiagonal++ : nextOther++] = {slot.edge, slot.a, slot.b};
     }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <unordered_map>
 #include <vector>
@@ -100,8 +101,8 @@ class BlockSystem {
   struct CarriedContribution {
     Edge* edge;
     int block;
-    int a;
-    int b;
+    std::int16_t a;  // the edge's local indices of the row and column vertices (16 bytes in all)
+    std::int16_t b;
   };
 
   // Sums block k of H from its edges; a diagonal block also its gradient and diagonal.
