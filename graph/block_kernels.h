@@ -37,8 +37,7 @@ template <bool Transposed>
 
 // d -= W V W^T for a rows x cols block W and a cols x cols block V.
 template <int R, int C>
-[[gnu::always_inline]] [[gnu::always_inline]] inline void subtractCongruence(const double* w, const double* v,
-                                                                             double* d, int rows, int cols) {
+[[gnu::always_inline]] inline void subtractCongruence(const double* w, const double* v, double* d, int rows, int cols) {
   const BlockMap<R, C> wm(w, rows, cols);
   Eigen::Map<Eigen::Matrix<double, R, R>>(d, rows, rows).noalias() -=
       wm * BlockMap<C, C>(v, cols, cols) * wm.transpose();
