@@ -1,5 +1,6 @@
 #include "lrsvo/frontend/datasets/euroc_reader.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -24,18 +25,19 @@ std::string readText(const std::string& path) {
   return text.str();
 }
 
+// Where `key:` starts a word in the text (from `from`), or npos.
+std::size_t findKey(const std::string& text, const std::string& key, std::size_t from = 0) {
+  for (std::size_t at = text.find(key + ":", from); at != std::string::npos; at = text.find(key + ":", at + 1))
+    if (at == 0 || text[at - 1] == '\n' || text[at - 1] == ' ') return at;
+  return std::string::npos;
+}
+
 // The numbers of the bracketed list after `key:` (searched from `from`),
 // which may span lines and carry '#' comments after it.
 std::vector<double> listAfter(const std::string& text, const std::string& key, const std::string& path,
                               std::size_t from) {
-  std::size_t at = from;
-  while (true) {
-    at = text.find(key + ":", at);
-    if (at == std::string::npos) throw Error("EuRoC: " + path + " has no key '" + key + "'");
-    const bool startsWord = at == 0 || text[at - 1] == '\n' || text[at - 1] == ' ';
-    if (startsWord) break;
-    ++at;
-  }
+  const std::size_t at = findKey(text, key, from);
+  if (at == std::string::npos) throw Error("EuRoC: " + path + " has no key '" + key + "'");
   const std::size_t open = text.find('[', at), close = text.find(']', at);
   const std::size_t lineEnd = text.find('\n', at);
   if (open == std::string::npos || close == std::string::npos || close < open || open > lineEnd)
@@ -82,12 +84,89 @@ std::map<long long, std::string> readImageList(const std::string& cameraDirector
   return images;
 }
 
+// The word after `key:` on its line, without quotes or a '#' comment; empty
+// when the key is absent.
+std::string wordAfter(const std::string& text, const std::string& key) {
+  const std::size_t at = findKey(text, key);
+  if (at == std::string::npos) return "";
+  const std::size_t lineEnd = std::min(text.find('\n', at), text.size());
+  std::string value = text.substr(at + key.size() + 1, lineEnd - at - key.size() - 1);
+  value = value.substr(0, value.find('#'));
+  std::istringstream words(value);
+  std::string word;
+  words >> word;
+  if (word.size() >= 2 && (word.front() == '"' || word.front() == '\'') && word.back() == word.front())
+    word = word.substr(1, word.size() - 2);
+  return word;
+}
+
+// distortion_model and distortion_coefficients: radial-tangential (also
+// Kalibr's "radtan"; [k1 k2 p1 p2] or with k3), equidistant ([k1 k2 k3 k4]),
+// or none. A file without distortion_model is radial-tangential, as EuRoC's are.
+LensDistortion readDistortion(const std::string& text, const std::string& path) {
+  const std::string model = wordAfter(text, "distortion_model");
+  LensDistortion distortion;
+  if (model == "none") return distortion;
+  const std::vector<double> d = listAfter(text, "distortion_coefficients", path, 0);
+  if (model.empty() || model == "radial-tangential" || model == "radtan") {
+    if (d.size() != 4 && d.size() != 5)
+      throw Error("EuRoC: " + path +
+                  ": key 'distortion_coefficients' should hold 4 numbers (k1 k2 p1 p2) or 5 (and k3), has " +
+                  std::to_string(d.size()));
+  } else if (model == "equidistant") {
+    if (d.size() != 4)
+      throw Error(
+          "EuRoC: " + path +
+          ": key 'distortion_coefficients' should hold 4 numbers (k1 k2 k3 k4) for the equidistant model, has " +
+          std::to_string(d.size()));
+    distortion.model = LensDistortion::Model::kEquidistant;
+  } else {
+    throw Error("EuRoC: " + path + ": distortion_model '" + model +
+                "' is not supported (radial-tangential or radtan, equidistant, none)");
+  }
+  std::copy(d.begin(), d.end(), distortion.coefficients.begin());
+  return distortion;
+}
+
+// mav0/state_groundtruth_estimate0/data.csv, EuRoC's own ground truth: per row
+// the time (ns), the body's position p_RS_R (m) and orientation q_RS (w x y z)
+// in the world frame R, then velocities and biases, which are not read.
+std::vector<TimedPose> readStateGroundTruth(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error("EuRoC: cannot open " + path);
+  std::vector<TimedPose> poses;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (line.empty() || line[0] == '#') continue;
+    for (char& c : line)
+      if (c == ',') c = ' ';
+    std::istringstream fields(line);
+    long long stamp = 0;
+    double v[7];
+    if (!(fields >> stamp >> v[0] >> v[1] >> v[2] >> v[3] >> v[4] >> v[5] >> v[6]))
+      throw ParseError(path, number, "expected 'timestamp_ns, p_x, p_y, p_z, q_w, q_x, q_y, q_z, ...'");
+    const Eigen::Quaterniond q(v[3], v[4], v[5], v[6]);
+    if (!(q.norm() > 0.5 && q.norm() < 2.0))  // also false for NaN
+      throw ParseError(path, number, "the orientation quaternion is not near unit length");
+    TimedPose pose;
+    pose.time_s = static_cast<double>(stamp) * 1e-9;
+    pose.worldFromCamera.linear() = q.normalized().toRotationMatrix();
+    pose.worldFromCamera.translation() = Eigen::Vector3d(v[0], v[1], v[2]);
+    poses.push_back(pose);
+  }
+  if (poses.empty()) throw Error("EuRoC: " + path + " holds no pose");
+  return poses;
+}
+
 }  // namespace
 
 EurocCameraCalibration readEurocSensor(const std::string& path) {
   const std::string text = readText(path);
+  const std::string cameraModel = wordAfter(text, "camera_model");
+  if (!cameraModel.empty() && cameraModel != "pinhole")
+    throw Error("EuRoC: " + path + ": camera_model '" + cameraModel + "' is not supported (pinhole)");
   const std::vector<double> k = numberList(text, "intrinsics", path, 4);
-  const std::vector<double> d = numberList(text, "distortion_coefficients", path, 4);
+  const LensDistortion distortion = readDistortion(text, path);
   const std::vector<double> resolution = numberList(text, "resolution", path, 2);
   const std::size_t tbs = text.find("T_BS:");
   if (tbs == std::string::npos) throw Error("EuRoC: " + path + " has no key 'T_BS'");
@@ -96,7 +175,7 @@ EurocCameraCalibration readEurocSensor(const std::string& path) {
   calibration.camera.intrinsics = {k[0], k[1], k[2], k[3]};
   calibration.camera.width = static_cast<int>(resolution[0]);
   calibration.camera.height = static_cast<int>(resolution[1]);
-  calibration.distortion.coefficients = {d[0], d[1], d[2], d[3], 0.0};
+  calibration.distortion = distortion;
   Eigen::Matrix4d m;
   for (int i = 0; i < 16; ++i) m(i / 4, i % 4) = t[static_cast<std::size_t>(i)];
   calibration.bodyFromSensor.matrix() = m;
@@ -130,10 +209,17 @@ EurocSource::EurocSource(const std::string& directory) : directory_(directory) {
     for (std::size_t i = 0; i < trajectory.size(); ++i)
       truth_.poses.push_back({trajectory.times_s[i], trajectory.worldFromCamera[i] * bodyFromCamera});
   };
-  if (fs::exists(cameraTruth))
+  const std::string stateTruth = mav + "/state_groundtruth_estimate0/data.csv";
+  if (fs::exists(cameraTruth)) {
     readTruth(cameraTruth, Eigen::Isometry3d::Identity());
-  else if (fs::exists(bodyTruth))
+  } else if (fs::exists(bodyTruth)) {
     readTruth(bodyTruth, calibration[0].bodyFromSensor);
+  } else if (fs::exists(stateTruth)) {
+    for (TimedPose pose : readStateGroundTruth(stateTruth)) {
+      pose.worldFromCamera = pose.worldFromCamera * calibration[0].bodyFromSensor;
+      truth_.poses.push_back(pose);
+    }
+  }
 }
 
 std::optional<StereoFrame> EurocSource::next() {

@@ -12,14 +12,17 @@ namespace lrsvo {
 // One camera's calibration as EuRoC's cam<i>/sensor.yaml gives it.
 struct EurocCameraCalibration {
   Camera camera;                                                     // intrinsics [fu fv cu cv], resolution
-  LensDistortion distortion;                                         // radial-tangential [k1 k2 p1 p2]
+  LensDistortion distortion;                                         // distortion_model and its coefficients
   Eigen::Isometry3d bodyFromSensor = Eigen::Isometry3d::Identity();  // T_BS
 };
 
 // Reads cam<i>/sensor.yaml. EuRoC's files are YAML with a "%YAML:1.0" header
 // and nested T_BS maps; only the few keys needed are read, by hand, so that a
-// file with or without the header reads alike. Throws lrsvo::Error naming the
-// file and the missing or malformed key.
+// file with or without the header reads alike. camera_model must be pinhole
+// (or absent); distortion_model radial-tangential (or Kalibr's radtan: 4
+// coefficients k1 k2 p1 p2, or 5 with k3; the model of a file without the
+// key), equidistant (4: k1 k2 k3 k4, the fisheye model) or none. Throws
+// lrsvo::Error naming the file and the missing, malformed or unsupported key.
 EurocCameraCalibration readEurocSensor(const std::string& path);
 
 // A stereo sequence in the EuRoC MAV layout: DIR/mav0/cam0/data.csv,
@@ -27,7 +30,9 @@ EurocCameraCalibration readEurocSensor(const std::string& path);
 // base; cam1's extrinsic comes from the two T_BS. Frames pair cam0 and cam1
 // images of equal timestamp (cam0 images without a partner are skipped).
 // Ground truth, when present: DIR/groundtruth_cam0_tum.txt (poses of cam0),
-// else DIR/groundtruth_body_tum.txt (poses of the body, moved to cam0 by T_BS).
+// else DIR/groundtruth_body_tum.txt (poses of the body, moved to cam0 by T_BS),
+// else EuRoC's own mav0/state_groundtruth_estimate0/data.csv (the body's
+// poses likewise).
 // An image that cannot be read, or is not the size sensor.yaml gives, is
 // reported in its frame's defect; the sequence goes on.
 class EurocSource : public FrameSource {

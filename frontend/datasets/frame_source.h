@@ -51,9 +51,15 @@ struct StereoFrame {
   const cv::Mat& image(int camera) const;
 };
 
-// Radial-tangential lens distortion in OpenCV's order (k1, k2, p1, p2, k3);
-// all zero for an ideal pinhole (synthetic images, rectified data sets).
+// A camera's lens distortion; all zero for an ideal pinhole (synthetic images,
+// rectified data sets).
 struct LensDistortion {
+  // OpenCV's radial-tangential model, coefficients [k1 k2 p1 p2 k3] (EuRoC's
+  // "radial-tangential", Kalibr's "radtan"); or the equidistant fisheye model
+  // of cv::fisheye, [k1 k2 k3 k4] in the first four (EuRoC's and Kalibr's
+  // "equidistant").
+  enum class Model { kRadialTangential, kEquidistant };
+  Model model = Model::kRadialTangential;
   std::array<double, 5> coefficients{};
   bool none() const {
     for (double c : coefficients)

@@ -23,7 +23,8 @@ class Undistorter {
 
  private:
   cv::Matx33d cameraMatrix_;
-  cv::Mat coefficients_;
+  cv::Mat coefficients_;  // five for the radial-tangential model, four for the equidistant one
+  bool equidistant_;
   bool identity_;
 };
 

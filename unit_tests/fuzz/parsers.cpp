@@ -149,6 +149,20 @@ void eurocDataCsv(const std::uint8_t* data, std::size_t size) {
   rejectingBadInput([&] { EurocSource source(sequence.string()); });
 }
 
+void eurocGroundTruth(const std::uint8_t* data, std::size_t size) {
+  const fs::path sequence = scratch() / "euroc_truth";
+  const fs::path mav = sequence / "mav0";
+  if (!fs::exists(mav / "cam1" / "data.csv")) {
+    constexpr std::string_view kOneFrame = "#timestamp [ns],filename\n1000,1000.png\n";
+    writeFile(mav / "cam0" / "sensor.yaml", kSensorYaml);
+    writeFile(mav / "cam1" / "sensor.yaml", kSensorYamlRight);
+    writeFile(mav / "cam0" / "data.csv", kOneFrame);
+    writeFile(mav / "cam1" / "data.csv", kOneFrame);
+  }
+  writeFile(mav / "state_groundtruth_estimate0" / "data.csv", whole(data, size));
+  rejectingBadInput([&] { EurocSource source(sequence.string()); });
+}
+
 void kittiCalibTimes(const std::uint8_t* data, std::size_t size) {
   const std::vector<std::string_view> files = parts(data, size, 2);
   const fs::path sequence = scratch() / "kitti";
@@ -191,6 +205,7 @@ const std::vector<Parser>& parsers() {
       {"kitti_poses", "KITTI poses NUL their times (readKittiTrajectory)", kittiPoses},
       {"euroc_sensor", "EuRoC cam<i>/sensor.yaml (readEurocSensor)", eurocSensor},
       {"euroc_data_csv", "EuRoC cam0 NUL cam1 data.csv (EurocSource)", eurocDataCsv},
+      {"euroc_ground_truth", "EuRoC state_groundtruth_estimate0/data.csv (EurocSource)", eurocGroundTruth},
       {"kitti_calib_times", "KITTI calib.txt NUL times.txt (KittiSource)", kittiCalibTimes},
       {"scenario_yaml", "a sim: scenario YAML (readScenarioYaml)", scenarioYaml},
       {"gtsam_vo", "GTSAM VO calibration NUL poses NUL factors (loadGtsamStereoVo)", gtsamVo},

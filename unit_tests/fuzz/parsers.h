@@ -22,7 +22,7 @@ struct Parser {
 };
 
 // Every parser's harness: bal, graph_file, tum_poses, kitti_poses,
-// euroc_sensor, euroc_data_csv, kitti_calib_times, scenario_yaml, gtsam_vo,
+// euroc_sensor, euroc_data_csv, euroc_ground_truth, kitti_calib_times, scenario_yaml, gtsam_vo,
 // nist_problem.
 const std::vector<Parser>& parsers();
 // Throws lrsvo::Error on an unknown name.
