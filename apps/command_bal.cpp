@@ -35,20 +35,6 @@ struct BalCommandOptions {
   int solves = 1;
 };
 
-// Every vertex's estimate, to start a later solve where the first one started.
-std::vector<std::vector<double>> estimatesOf(const Graph& graph) {
-  std::vector<std::vector<double>> estimates;
-  for (const auto& vertex : graph.vertices()) {
-    estimates.emplace_back(vertex->estimateSize());
-    vertex->getEstimate(estimates.back().data());
-  }
-  return estimates;
-}
-
-void setEstimates(Graph& graph, const std::vector<std::vector<double>>& estimates) {
-  for (std::size_t i = 0; i < estimates.size(); ++i) graph.vertices()[i]->setEstimate(estimates[i].data());
-}
-
 void writeText(const std::string& path, const std::string& text) {
   std::ofstream out(path);
   out << text << '\n';
@@ -95,10 +81,10 @@ void run(const BalCommandOptions& o) {
   std::printf("\n");
 
   // Later solves start where the first did, on the structure the optimizer kept.
-  const std::vector<std::vector<double>> start = o.solves > 1 ? estimatesOf(graph) : std::vector<std::vector<double>>{};
+  const std::vector<double> start = o.solves > 1 ? graph.estimates() : std::vector<double>{};
   SolverSummary summary;
   for (int k = 1; k <= o.solves; ++k) {
-    if (k > 1) setEstimates(graph, start);
+    if (k > 1) graph.setEstimates(start);
     summary = optimizer.optimize(graph);
     if (o.solves > 1)
       std::printf("Solve %d of %d: setup %.4f s%s, total %.4f s\n", k, o.solves, summary.setupSeconds,

@@ -193,26 +193,19 @@ BoundsState inspectBounds(const Bounds& bounds) {
 class BenchProblem {
  public:
   BenchProblem(std::string name, Graph& graph, const Bounds& bounds, nlohmann::ordered_json fields)
-      : name_(std::move(name)), graph_(graph), bounds_(bounds), fields_(std::move(fields)) {
-    for (const auto& vertex : graph_.vertices()) {
-      start_.emplace_back(vertex->estimateSize());
-      vertex->getEstimate(start_.back().data());
-    }
-  }
+      : name_(std::move(name)), graph_(graph), bounds_(bounds), fields_(std::move(fields)), start_(graph.estimates()) {}
   const std::string& name() const { return name_; }
   const nlohmann::ordered_json& fields() const { return fields_; }
   Graph& graph() { return graph_; }
   const Bounds& bounds() const { return bounds_; }
-  void restoreStart() {
-    for (std::size_t i = 0; i < start_.size(); ++i) graph_.vertices()[i]->setEstimate(start_[i].data());
-  }
+  void restoreStart() { graph_.setEstimates(start_); }
 
  private:
   std::string name_;
   Graph& graph_;
   const Bounds& bounds_;
   nlohmann::ordered_json fields_;
-  std::vector<std::vector<double>> start_;  // per vertex, in graph order
+  std::vector<double> start_;  // Graph::estimates()
 };
 
 // A row of the comparison with what this bench adds to the common one.

@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "lrsvo/graph/balanced_ranges.h"
 #include "lrsvo/graph/block_kernels.h"
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/parallel_for.h"
@@ -292,16 +293,10 @@ void BlockSystem::splitMarginalisedColumns() {
                                          static_cast<double>(std::min(kMaxCarriedRanges, marginalised))));
   partialSums_.assign(static_cast<std::size_t>(ranges) * partialSize_, 0.0);
 
-  double total = 0.0;
-  for (double w : work) total += w;
   marginalisedRanges_.assign(1, freeCount_);
-  double done = 0.0;
-  for (int m = 0; m + 1 < marginalised && static_cast<int>(marginalisedRanges_.size()) < ranges; ++m) {
-    done += work[m];
-    if (done >= total * static_cast<double>(marginalisedRanges_.size()) / ranges)
-      marginalisedRanges_.push_back(freeCount_ + m + 1);
-  }
-  if (ranges > 0) marginalisedRanges_.push_back(blockCount());
+  if (ranges == 0) return;
+  marginalisedRanges_ = balancedRanges(work, ranges);
+  for (int& bound : marginalisedRanges_) bound += freeCount_;
 }
 
 bool BlockSystem::describes(const Graph& graph, bool schurOrdering) const {

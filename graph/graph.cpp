@@ -53,4 +53,27 @@ double Graph::cost() const {
   return total;
 }
 
+std::vector<double> Graph::estimates() const {
+  std::vector<double> values;
+  for (const auto& vertex : vertices_) {
+    const std::size_t start = values.size();
+    values.resize(start + static_cast<std::size_t>(vertex->estimateSize()));
+    vertex->getEstimate(values.data() + start);
+  }
+  return values;
+}
+
+void Graph::setEstimates(const std::vector<double>& values) {
+  std::size_t expected = 0;
+  for (const auto& vertex : vertices_) expected += static_cast<std::size_t>(vertex->estimateSize());
+  if (values.size() != expected)
+    throw Error("setEstimates: the graph's vertices hold " + std::to_string(expected) + " values, got " +
+                std::to_string(values.size()));
+  std::size_t next = 0;
+  for (const auto& vertex : vertices_) {
+    vertex->setEstimate(values.data() + next);
+    next += static_cast<std::size_t>(vertex->estimateSize());
+  }
+}
+
 }  // namespace lrsvo

@@ -46,6 +46,13 @@ class Graph {
   // Sum of all edge costs (Ceres' convention, 1/2 rho(||r||^2) per edge).
   double cost() const;
 
+  // Every vertex's estimate, one after another in vertex order: a start to
+  // come back to with setEstimates (say, to solve again from it).
+  std::vector<double> estimates() const;
+  // Sets every vertex's estimate from values laid out as estimates() gives
+  // them. Throws lrsvo::Error when their count is not that of estimates().
+  void setEstimates(const std::vector<double>& values);
+
  private:
   void insertVertex(std::unique_ptr<Vertex> vertex);
   void insertEdge(std::unique_ptr<Edge> edge);

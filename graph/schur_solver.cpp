@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "lrsvo/graph/balanced_ranges.h"
 #include "lrsvo/graph/parallel_for.h"
 #include "lrsvo/graph/stopwatch.h"
 
@@ -30,22 +31,6 @@ auto selectKernel(int di, int dj) {
   if (di == 6) return &subtractProduct<6, DL, X>;
   if (di == 9) return &subtractProduct<9, DL, X>;
   return &subtractProduct<X, DL, X>;
-}
-
-// Splits rows [0, work.size()) into at most `parts` contiguous ranges of about
-// equal total work; returns the ranges' boundaries, first 0, last the row count.
-std::vector<int> balancedRanges(const std::vector<double>& work, int parts) {
-  double total = 0.0;
-  for (double w : work) total += w;
-  const int rows = static_cast<int>(work.size());
-  std::vector<int> bounds{0};
-  double done = 0.0;
-  for (int i = 0; i + 1 < rows; ++i) {
-    done += work[i];
-    if (done >= total * static_cast<double>(bounds.size()) / parts) bounds.push_back(i + 1);
-  }
-  bounds.push_back(rows);
-  return bounds;
 }
 
 }  // namespace

@@ -141,7 +141,7 @@ void expectExactRoundTrip(const std::string& path) {
   const std::string first = g2oText(original);
   const Graph loaded = g2oGraph(first);
   EXPECT_EQ(g2oText(loaded), first);
-  EXPECT_EQ(allEstimates(loaded), allEstimates(original));
+  EXPECT_EQ(loaded.estimates(), original.estimates());
   EXPECT_EQ(loaded.cost(), original.cost());
 }
 

@@ -90,7 +90,7 @@ void expectExactRoundTrip(const Graph& original) {
     EXPECT_EQ(a.marginalized(), b.marginalized()) << a.id();
   }
   // Bit for bit: compared as doubles with ==, not within a tolerance.
-  const std::vector<double> a = allEstimates(original), b = allEstimates(loaded);
+  const std::vector<double> a = original.estimates(), b = loaded.estimates();
   ASSERT_EQ(a.size(), b.size());
   int differing = 0;
   for (std::size_t k = 0; k < a.size(); ++k) differing += a[k] != b[k];

@@ -112,7 +112,7 @@ TEST(Optimizer, GaussNewtonAndLevenbergMarquardtReachTheSameMinimum) {
   ASSERT_TRUE(gn.converged()) << gn.fullReport();
   ASSERT_TRUE(lm.converged()) << lm.fullReport();
   EXPECT_NEAR(gn.finalCost, lm.finalCost, 1e-8 * lm.finalCost);
-  const std::vector<double> a = allEstimates(gnGraph), b = allEstimates(lmGraph);
+  const std::vector<double> a = gnGraph.estimates(), b = lmGraph.estimates();
   for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k], b[k], 1e-5) << "estimate " << k;
 }
 
@@ -155,7 +155,7 @@ TEST(Optimizer, JacobiScaledDiagonalLeavesAWellCurvedSolveAsItIs) {
     EXPECT_NEAR(scaled.finalCost, plain.finalCost, 1e-9 * plain.finalCost) << solver;
     EXPECT_NEAR(static_cast<double>(scaled.iterations.size()), static_cast<double>(plain.iterations.size()), 1.0)
         << solver;
-    const std::vector<double> a = allEstimates(plainGraph), b = allEstimates(scaledGraph);
+    const std::vector<double> a = plainGraph.estimates(), b = scaledGraph.estimates();
     for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k], b[k], 1e-6) << solver << " estimate " << k;
   }
 }
@@ -193,14 +193,14 @@ TEST(Optimizer, StartAtTheOptimumStopsOnTheGradient) {
     problem.sharedScale = true;
     problem.pixelNoise = problem.poseNoise = problem.pointNoise = problem.scaleNoise = 0.0;
     Graph graph = makeToyProblem(problem);
-    const std::vector<double> start = allEstimates(graph);
+    const std::vector<double> start = graph.estimates();
     SolverOptions options;
     options.algorithm = algorithm;
     const SolverSummary summary = Optimizer(options).optimize(graph);
     EXPECT_EQ(summary.termination, Termination::kGradientTolerance) << algorithm;
     EXPECT_EQ(summary.iterationCount(), 0) << algorithm;
     EXPECT_LT(summary.finalCost, 1e-20) << algorithm;
-    EXPECT_EQ(allEstimates(graph), start) << algorithm;
+    EXPECT_EQ(graph.estimates(), start) << algorithm;
   }
 }
 
@@ -230,7 +230,7 @@ TEST(Optimizer, TwoThreadsGiveTheSameResultAsOne) {
       const SolverSummary summary = Optimizer(options).optimize(graph);
       EXPECT_EQ(summary.threads, threads);
       costs[threads - 1] = summary.finalCost;
-      estimates[threads - 1] = allEstimates(graph);
+      estimates[threads - 1] = graph.estimates();
     }
     EXPECT_NEAR(costs[1], costs[0], 1e-9 * costs[0]) << solver;
     for (std::size_t k = 0; k < estimates[0].size(); ++k)

@@ -179,7 +179,7 @@ TEST(GraphFile, PoseGraphTypesRoundTripExactly) {
     EXPECT_NE(text.find(tag), std::string::npos) << tag;
   const Graph loaded = loadFromString(text);
   EXPECT_EQ(saveToString(loaded), text);
-  EXPECT_EQ(allEstimates(loaded), allEstimates(graph));
+  EXPECT_EQ(loaded.estimates(), graph.estimates());
   EXPECT_EQ(loaded.cost(), graph.cost());
 }
 

@@ -282,14 +282,4 @@ Graph loadFromString(const std::string& text, const std::string& sourceName) {
   return loadGraph(in, sourceName);
 }
 
-std::vector<double> allEstimates(const Graph& graph) {
-  std::vector<double> values;
-  for (const auto& vertex : graph.vertices()) {
-    const std::size_t start = values.size();
-    values.resize(start + vertex->estimateSize());
-    vertex->getEstimate(values.data() + start);
-  }
-  return values;
-}
-
 }  // namespace lrsvo::test

@@ -126,9 +126,6 @@ Eigen::MatrixXd denseHessian(const BlockSystem& system);
 std::string saveToString(const Graph& graph);
 Graph loadFromString(const std::string& text, const std::string& sourceName = "test.graph");
 
-// Every estimate of the graph, in vertex order.
-std::vector<double> allEstimates(const Graph& graph);
-
 namespace detail {
 
 template <int K, typename EdgeType>

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lrsvo/graph/error.h"
 #include "lrsvo/graph/linear_solver.h"
 #include "lrsvo/graph/optimizer.h"
 #include "lrsvo/graph/registry.h"
@@ -31,14 +32,6 @@ ToyOptions sharedScaleProblem() {
   return options;
 }
 
-void setAllEstimates(Graph& graph, const std::vector<double>& values) {
-  std::size_t next = 0;
-  for (const auto& vertex : graph.vertices()) {
-    vertex->setEstimate(values.data() + next);
-    next += static_cast<std::size_t>(vertex->estimateSize());
-  }
-}
-
 Vertex* vertexOfType(const Graph& graph, const std::string& typeTag, int skip = 0) {
   for (const auto& vertex : graph.vertices())
     if (vertex->typeTag() == typeTag && skip-- == 0) return vertex.get();
@@ -56,18 +49,18 @@ TEST(StructureReuse, ASecondSolveOfTheSameStructureIsTheFreshSolveBitForBit) {
     problem.points = 150;
     problem.kernel = "cycle";
     Graph graph = makeBalToyProblem(problem);
-    const std::vector<double> start = allEstimates(graph);
+    const std::vector<double> start = graph.estimates();
 
     Optimizer optimizer(options);
     const SolverSummary first = optimizer.optimize(graph);
     EXPECT_FALSE(first.structureReused);
-    const std::vector<double> firstResult = allEstimates(graph);
+    const std::vector<double> firstResult = graph.estimates();
 
-    setAllEstimates(graph, start);
+    graph.setEstimates(start);
     const SolverSummary second = optimizer.optimize(graph);
     EXPECT_TRUE(second.structureReused);
     EXPECT_NE(second.fullReport().find("structure reused"), std::string::npos);
-    EXPECT_EQ(allEstimates(graph), firstResult);
+    EXPECT_EQ(graph.estimates(), firstResult);
     EXPECT_EQ(second.finalCost, first.finalCost);
     EXPECT_EQ(second.iterationCount(), first.iterationCount());
     // The phase times are this solve's, not the kept solver's running totals.
@@ -106,9 +99,9 @@ TEST(StructureReuse, AnyChangeOfStructureIsSetUpAfresh) {
       SCOPED_TRACE(std::string(solver) + ", " + what);
       Optimizer kept(SolverOptions::fromName(solver));
       Graph graph = makeToyProblem(sharedScaleProblem());
-      const std::vector<double> start = allEstimates(graph);
+      const std::vector<double> start = graph.estimates();
       kept.optimize(graph);
-      setAllEstimates(graph, start);
+      graph.setEstimates(start);
       change(graph);
       const SolverSummary again = kept.optimize(graph);
       // Without the Schur ordering, whether a vertex is marginalised does not shape the system.
@@ -118,10 +111,25 @@ TEST(StructureReuse, AnyChangeOfStructureIsSetUpAfresh) {
       Graph fresh = makeToyProblem(sharedScaleProblem());
       change(fresh);
       const SolverSummary reference = Optimizer(SolverOptions::fromName(solver)).optimize(fresh);
-      EXPECT_EQ(allEstimates(graph), allEstimates(fresh));
+      EXPECT_EQ(graph.estimates(), fresh.estimates());
       EXPECT_EQ(again.finalCost, reference.finalCost);
     }
   }
+}
+
+// A start to come back to: every estimate in vertex order, set back exactly;
+// a list of another length is refused.
+TEST(GraphEstimates, ComeBackThroughSetEstimates) {
+  Graph graph = makeToyProblem(sharedScaleProblem());
+  const std::vector<double> start = graph.estimates();
+  std::size_t expected = 0;
+  for (const auto& vertex : graph.vertices()) expected += static_cast<std::size_t>(vertex->estimateSize());
+  ASSERT_EQ(start.size(), expected);
+  Optimizer().optimize(graph);
+  ASSERT_NE(graph.estimates(), start);
+  graph.setEstimates(start);
+  EXPECT_EQ(graph.estimates(), start);
+  EXPECT_THROW(graph.setEstimates(std::vector<double>(start.begin(), start.end() - 1)), Error);
 }
 
 // Another graph of the same shape is a different structure (its vertices and
