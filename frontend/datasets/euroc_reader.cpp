@@ -1,6 +1,7 @@
 #include "lrsvo/frontend/datasets/euroc_reader.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -74,8 +75,12 @@ std::map<long long, std::string> readImageList(const std::string& cameraDirector
     if (line.back() == '\r') line.pop_back();
     const std::size_t comma = line.find(',');
     if (comma == std::string::npos) throw ParseError(path, number, "expected 'timestamp_ns,filename'");
+    std::string file = line.substr(comma + 1);
+    file.erase(0, file.find_first_not_of(" \t"));
+    file.erase(file.find_last_not_of(" \t") + 1);
+    if (file.empty()) throw ParseError(path, number, "no file name after the timestamp");
     try {
-      images[std::stoll(line.substr(0, comma))] = cameraDirectory + "/data/" + line.substr(comma + 1);
+      images[std::stoll(line.substr(0, comma))] = cameraDirectory + "/data/" + file;
     } catch (const std::logic_error&) {
       throw ParseError(path, number, "the timestamp is not an integer number of nanoseconds");
     }
@@ -182,6 +187,30 @@ EurocCameraCalibration readEurocSensor(const std::string& path) {
   return calibration;
 }
 
+std::vector<EurocSource::FramePaths> EurocSource::pairByTime(const std::map<long long, std::string>& cam0,
+                                                              const std::map<long long, std::string>& cam1) {
+  // Only the stretch both cameras recorded holds frames: one camera's images
+  // before the other's first or after its last are not missing partners.
+  const long long first = std::max(cam0.begin()->first, cam1.begin()->first) - kStereoSyncTolerance_ns;
+  const long long last = std::min(cam0.rbegin()->first, cam1.rbegin()->first) + kStereoSyncTolerance_ns;
+  std::vector<FramePaths> frames;
+  auto a = cam0.lower_bound(first), b = cam1.lower_bound(first);
+  const auto aEnd = cam0.upper_bound(last), bEnd = cam1.upper_bound(last);
+  while (a != aEnd || b != bEnd) {
+    if (a != aEnd && b != bEnd && std::llabs(a->first - b->first) <= kStereoSyncTolerance_ns) {
+      frames.push_back({a->first * 1e-9, {a->second, b->second}});
+      ++a, ++b;
+    } else if (b == bEnd || (a != aEnd && a->first < b->first)) {
+      frames.push_back({a->first * 1e-9, {a->second, ""}});
+      ++a;
+    } else {
+      frames.push_back({b->first * 1e-9, {"", b->second}});
+      ++b;
+    }
+  }
+  return frames;
+}
+
 EurocSource::EurocSource(const std::string& directory) : directory_(directory) {
   const std::string mav = directory + "/mav0";
   if (!fs::is_directory(mav)) throw Error("EuRoC: no directory " + mav);
@@ -196,11 +225,10 @@ EurocSource::EurocSource(const std::string& directory) : directory_(directory) {
   rig_.extrinsics = {extrinsicFromPoses(calibration[0].bodyFromSensor, calibration[1].bodyFromSensor)};
   rig_.validate();
   distortion_ = {calibration[0].distortion, calibration[1].distortion};
-  for (const auto& [stamp, file] : images[0]) {
-    const auto partner = images[1].find(stamp);
-    if (partner != images[1].end()) frames_.push_back({stamp * 1e-9, {file, partner->second}});
-  }
-  if (frames_.empty()) throw Error("EuRoC: no cam0 and cam1 images share a timestamp in " + mav);
+  frames_ = pairByTime(images[0], images[1]);
+  if (std::none_of(frames_.begin(), frames_.end(), [](const FramePaths& f) { return f.paired(); }))
+    throw Error("EuRoC: no cam0 image has a cam1 image within " + std::to_string(kStereoSyncTolerance_ns / 1000) +
+                " us of its timestamp in " + mav);
 
   const std::string cameraTruth = directory + "/groundtruth_cam0_tum.txt";
   const std::string bodyTruth = directory + "/groundtruth_body_tum.txt";
@@ -229,6 +257,13 @@ std::optional<StereoFrame> EurocSource::next() {
   frame.index = static_cast<int>(next_++);
   frame.time_s = paths.time_s;
   for (std::size_t c = 0; c < 2; ++c) {
+    if (paths.images[c].empty()) {
+      if (frame.defect.empty())
+        frame.defect = "no cam" + std::to_string(c) + " image within " + std::to_string(kStereoSyncTolerance_ns / 1000) +
+                       " us of cam" + std::to_string(1 - c) + "'s";
+      frame.images.emplace_back();
+      continue;
+    }
     cv::Mat image = cv::imread(paths.images[c], cv::IMREAD_GRAYSCALE);
     const Camera& camera = rig_.cameras[c];
     if (image.empty() && frame.defect.empty()) frame.defect = "cannot read image " + paths.images[c];

@@ -1,9 +1,11 @@
 // Frames whose images cannot be used: the frame check on its own, then whole
 // runs on the real EuRoC frames with one frame broken in each way a data set
-// breaks (missing, truncated, blank, wrongly sized).
+// breaks (missing, truncated, blank, wrongly sized, left out of one camera's
+// list); stereo pairs matched by time.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -112,10 +114,31 @@ fs::path imageOf(const fs::path& sequence, const char* camera, int n) {
   return images.at(static_cast<std::size_t>(n));
 }
 
-enum class Breakage { kMissing, kTruncated, kBlank, kWrongSize };
+enum class Breakage { kMissing, kTruncated, kBlank, kWrongSize, kUnlisted };
+
+// Rewrites a camera's data.csv, each row through `edit` (a row it returns
+// empty is left out).
+template <typename Edit>
+void editImageList(const fs::path& camera, Edit edit) {
+  std::vector<std::string> rows;
+  {
+    std::ifstream in(camera / "data.csv");
+    for (std::string row; std::getline(in, row);) rows.push_back(row[0] == '#' ? row : edit(row));
+  }
+  std::ofstream out(camera / "data.csv");
+  for (const std::string& row : rows)
+    if (!row.empty()) out << row << '\n';
+}
 
 // Replaces the image with a broken one; returns what frames.csv should say.
 std::string breakImage(const fs::path& image, Breakage breakage) {
+  if (breakage == Breakage::kUnlisted) {
+    const std::string file = image.filename().string();
+    editImageList(image.parent_path().parent_path(), [&](const std::string& row) {
+      return row.find(file) == std::string::npos ? row : std::string();
+    });
+    return image.parent_path().parent_path().filename() == "cam0" ? "no cam0 image" : "no cam1 image";
+  }
   const cv::Mat original = cv::imread(image.string(), cv::IMREAD_GRAYSCALE);
   std::ifstream in(image, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -128,6 +151,7 @@ std::string breakImage(const fs::path& image, Breakage breakage) {
     case Breakage::kBlank:
       cv::imwrite(image.string(), cv::Mat(original.size(), CV_8UC1, cv::Scalar(255)));
       return "a blank image";
+    case Breakage::kUnlisted: break;
     case Breakage::kWrongSize: {
       cv::Mat half;
       cv::resize(original, half, original.size() / 2);
@@ -179,7 +203,7 @@ TEST_P(BadEurocFrame, IsSkippedAndTheRunGoesOn) {
 }
 
 std::string breakageName(const testing::TestParamInfo<BadEurocFrame::ParamType>& info) {
-  constexpr const char* kNames[] = {"Missing", "Truncated", "Blank", "WrongSize"};
+  constexpr const char* kNames[] = {"Missing", "Truncated", "Blank", "WrongSize", "Unlisted"};
   return std::string(kNames[static_cast<int>(std::get<0>(info.param))]) + "In" + std::get<1>(info.param);
 }
 
@@ -187,8 +211,48 @@ INSTANTIATE_TEST_SUITE_P(EachKind, BadEurocFrame,
                          testing::Values(std::make_tuple(Breakage::kMissing, "cam0"),
                                          std::make_tuple(Breakage::kTruncated, "cam1"),
                                          std::make_tuple(Breakage::kBlank, "cam0"),
-                                         std::make_tuple(Breakage::kWrongSize, "cam1")),
+                                         std::make_tuple(Breakage::kWrongSize, "cam1"),
+                                         std::make_tuple(Breakage::kUnlisted, "cam0"),
+                                         std::make_tuple(Breakage::kUnlisted, "cam1")),
                          breakageName);
+
+// Every image's timestamp in one camera's data.csv moved by `shift_ns`.
+void shiftTimestamps(const fs::path& camera, long long shift_ns) {
+  editImageList(camera, [&](const std::string& row) {
+    const std::size_t comma = row.find(',');
+    return std::to_string(std::stoll(row.substr(0, comma)) + shift_ns) + row.substr(comma);
+  });
+}
+
+// Stereo pairs match by time within the tolerance, whichever camera's clock
+// runs ahead; past it no image pairs, and the error says so.
+TEST(EurocSource, PairsStereoImagesWithinTheSyncTolerance) {
+  const long long tolerance = EurocSource::kStereoSyncTolerance_ns;
+  const fs::path sequence = linkedEurocCopy("stereo_sync");
+  for (long long shift : {tolerance / 4, -tolerance}) {
+    SCOPED_TRACE(shift);
+    EurocSource reference(sequence.string());
+    shiftTimestamps(sequence / "mav0" / "cam1", shift);
+    EurocSource shifted(sequence.string());
+    ASSERT_EQ(shifted.frameCount(), reference.frameCount());
+    for (int i = 0; i < reference.frameCount(); ++i) {
+      const std::optional<StereoFrame> a = reference.next(), b = shifted.next();
+      ASSERT_TRUE(a && b);
+      EXPECT_EQ(b->defect, "") << i;
+      EXPECT_EQ(b->time_s, a->time_s) << i;  // cam0's time
+    }
+    shiftTimestamps(sequence / "mav0" / "cam1", -shift);
+  }
+  shiftTimestamps(sequence / "mav0" / "cam1", tolerance + 1);
+  try {
+    EurocSource source(sequence.string());
+    ADD_FAILURE() << "no image pairs, but no error";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("no cam0 image has a cam1 image within 1000 us"), std::string::npos)
+        << error.what();
+  }
+  fs::remove_all(sequence);
+}
 
 TEST(BadEurocFrameStop, EndsTheRunNamingTheFrame) {
   const fs::path sequence = linkedEurocCopy("bad_frame_stop");
