@@ -188,7 +188,7 @@ EurocCameraCalibration readEurocSensor(const std::string& path) {
 }
 
 std::vector<EurocSource::FramePaths> EurocSource::pairByTime(const std::map<long long, std::string>& cam0,
-                                                              const std::map<long long, std::string>& cam1) {
+                                                             const std::map<long long, std::string>& cam1) {
   // Only the stretch both cameras recorded holds frames: one camera's images
   // before the other's first or after its last are not missing partners.
   const long long first = std::max(cam0.begin()->first, cam1.begin()->first) - kStereoSyncTolerance_ns;
@@ -259,8 +259,8 @@ std::optional<StereoFrame> EurocSource::next() {
   for (std::size_t c = 0; c < 2; ++c) {
     if (paths.images[c].empty()) {
       if (frame.defect.empty())
-        frame.defect = "no cam" + std::to_string(c) + " image within " + std::to_string(kStereoSyncTolerance_ns / 1000) +
-                       " us of cam" + std::to_string(1 - c) + "'s";
+        frame.defect = "no cam" + std::to_string(c) + " image within " +
+                       std::to_string(kStereoSyncTolerance_ns / 1000) + " us of cam" + std::to_string(1 - c) + "'s";
       frame.images.emplace_back();
       continue;
     }

@@ -134,9 +134,8 @@ void editImageList(const fs::path& camera, Edit edit) {
 std::string breakImage(const fs::path& image, Breakage breakage) {
   if (breakage == Breakage::kUnlisted) {
     const std::string file = image.filename().string();
-    editImageList(image.parent_path().parent_path(), [&](const std::string& row) {
-      return row.find(file) == std::string::npos ? row : std::string();
-    });
+    editImageList(image.parent_path().parent_path(),
+                  [&](const std::string& row) { return row.find(file) == std::string::npos ? row : std::string(); });
     return image.parent_path().parent_path().filename() == "cam0" ? "no cam0 image" : "no cam1 image";
   }
   const cv::Mat original = cv::imread(image.string(), cv::IMREAD_GRAYSCALE);
@@ -207,14 +206,12 @@ std::string breakageName(const testing::TestParamInfo<BadEurocFrame::ParamType>&
   return std::string(kNames[static_cast<int>(std::get<0>(info.param))]) + "In" + std::get<1>(info.param);
 }
 
-INSTANTIATE_TEST_SUITE_P(EachKind, BadEurocFrame,
-                         testing::Values(std::make_tuple(Breakage::kMissing, "cam0"),
-                                         std::make_tuple(Breakage::kTruncated, "cam1"),
-                                         std::make_tuple(Breakage::kBlank, "cam0"),
-                                         std::make_tuple(Breakage::kWrongSize, "cam1"),
-                                         std::make_tuple(Breakage::kUnlisted, "cam0"),
-                                         std::make_tuple(Breakage::kUnlisted, "cam1")),
-                         breakageName);
+INSTANTIATE_TEST_SUITE_P(
+    EachKind, BadEurocFrame,
+    testing::Values(std::make_tuple(Breakage::kMissing, "cam0"), std::make_tuple(Breakage::kTruncated, "cam1"),
+                    std::make_tuple(Breakage::kBlank, "cam0"), std::make_tuple(Breakage::kWrongSize, "cam1"),
+                    std::make_tuple(Breakage::kUnlisted, "cam0"), std::make_tuple(Breakage::kUnlisted, "cam1")),
+    breakageName);
 
 // Every image's timestamp in one camera's data.csv moved by `shift_ns`.
 void shiftTimestamps(const fs::path& camera, long long shift_ns) {
