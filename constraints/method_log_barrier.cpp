@@ -1,24 +1,52 @@
+#include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "lrsvo/constraints/barrier_edge.h"
 #include "lrsvo/constraints/builtin_methods.h"
 #include "lrsvo/constraints/constraint_method.h"
+#include "lrsvo/graph/error.h"
 #include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
 namespace {
 
 // The paper's method: one unary barrier edge per bounded parameter, solved
-// by the ordinary optimiser (steps leaving the box cost +inf and are
-// rejected, so lambda grows). mu shrinks over outer rounds, an
-// interior-point schedule; one round keeps mu fixed.
+// by the ordinary optimiser. mu shrinks over outer rounds, an interior-point
+// schedule; one round keeps mu fixed. A trial step that would take a bounded
+// parameter out of the box, or onto its bound, goes only a fraction
+// (`boundary_fraction`) of the way from the parameter to that bound, as
+// interior-point methods keep their iterates inside. Tried whole, such a
+// step would cost +inf and be rejected; the damping would then grow until
+// the step fits inside, and shrink every other parameter's step with it, so
+// a parameter the data push against a bound (a weakly observed centre
+// coordinate, an angle that trades off against the scale) would hold the
+// whole adjustment to short steps.
 class LogBarrier : public ConstraintMethod {
  public:
   LogBarrier() {
     declare("mu", &startMu_, "weight mu of -mu log(1 - y^2), y = (x - centre) / half-width, in the first round");
     declare("decrease", &decrease_, "factor on mu after each round");
     declare("rounds", &rounds_, "outer solves, each from the last one's iterate (1: mu fixed)");
+    declare("boundary_fraction", &boundaryFraction_,
+            "the fraction of its distance to a bound a step may take a parameter, in (0, 1)");
+  }
+
+  bool adjustStep(const BlockSystem& system, Eigen::VectorXd& dx) override {
+    bool changed = false;
+    for (const Bounds::Bound& bound : bounds_.all()) {
+      const int block = system.blockOf(bound.vertex);
+      if (block < 0) continue;
+      double& step = dx[system.offset(block) + bound.index];
+      const double x = Bounds::value(bound);
+      const double room = boundaryFraction_ * (step > 0.0 ? bound.upper - x : x - bound.lower);
+      if (std::abs(step) > room) {
+        step = std::copysign(room, step);
+        changed = true;
+      }
+    }
+    return changed;
   }
 
   // The rounds share one optimizer and one set of barrier edges (only mu
@@ -47,6 +75,8 @@ class LogBarrier : public ConstraintMethod {
   }
 
   void begin(Graph& graph) override {
+    if (!(boundaryFraction_ > 0.0 && boundaryFraction_ < 1.0))
+      throw Error("log_barrier: boundary_fraction must lie in (0, 1), got " + std::to_string(boundaryFraction_));
     // Later rounds start from the previous round's iterate, strictly inside
     // because its barrier cost was finite, however close to a bound.
     if (round_ == 0) enforceStart(true);
@@ -84,6 +114,7 @@ class LogBarrier : public ConstraintMethod {
   }
 
   double startMu_ = 1e-2;
+  double boundaryFraction_ = 0.995;
   double decrease_ = 0.1;
   int rounds_ = 3;
   double mu_ = 0.0;

@@ -2,6 +2,11 @@
 
 namespace lrsvo {
 
+bool isBetterStart(const InitializationResult& candidate, const InitializationResult& other) {
+  if (candidate.success != other.success) return candidate.success;
+  return candidate.rmsReprojectionError_px < other.rmsReprojectionError_px;
+}
+
 std::vector<Eigen::Isometry3d> alignToFirstCamera(const std::vector<Eigen::Isometry3d>& trueCameraFromWorld) {
   std::vector<Eigen::Isometry3d> aligned;
   if (trueCameraFromWorld.empty()) return aligned;

@@ -31,6 +31,11 @@ struct InitializationResult {
   double rmsReprojectionError_px = 0.0;  // per image coordinate, over every observation in that adjustment
 };
 
+// Whether `candidate` is a better start than `other`, both from the same
+// frames (one per motion hypothesis): one that passes its initialiser's
+// checks beats one that does not, then the lower RMS reprojection error wins.
+bool isBetterStart(const InitializationResult& candidate, const InitializationResult& other);
+
 // Ground-truth camera-from-world poses re-expressed with the first camera's
 // frame as the world (T_i T_0^-1), the frame an initialiser's result is in;
 // e.g. the final position error is |C_last(result) - C_last(aligned truth)|.

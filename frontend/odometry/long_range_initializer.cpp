@@ -4,10 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 
+#include "lrsvo/frontend/odometry/window_outliers.h"
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/marginal_covariance.h"
 #include "lrsvo/graph/registry.h"
@@ -31,6 +33,7 @@ void validate(const LongRangeInitializerOptions& o) {
     throw Error("long-range initialiser: " + std::string(e.what()));
   }
   o.solver.validate();
+  validate(o.outliers);
 }
 
 // The relative standard deviation of the metric scale, as that of the metric
@@ -73,12 +76,13 @@ InitializationResult LongRangeInitializer::initialize(const Rig& rig,
 
   // The secondary camera judges the pair's motion hypotheses: its calibrated
   // offset along the baseline fits the true motion only, so the planar twin
-  // leaves a large reprojection error even with S at its bounds.
+  // leaves a large reprojection error even with S at its bounds, or fits
+  // only with a kappa so large that its conditioning check fails.
   std::optional<InitializationResult> best;
   for (const MonocularResult& monocular : maps) {
     if (!monocular.success) continue;
     InitializationResult candidate = addSecondaryCameras(rig, frames, monocular.map);
-    if (!best || candidate.rmsReprojectionError_px < best->rmsReprojectionError_px) best = std::move(candidate);
+    if (!best || isBetterStart(candidate, *best)) best = std::move(candidate);
   }
   if (best) return std::move(*best);
   InitializationResult result;
@@ -86,20 +90,56 @@ InitializationResult LongRangeInitializer::initialize(const Rig& rig,
   return result;
 }
 
+LongRangeInitializer::Batch LongRangeInitializer::adjust(const Rig& rig, const std::vector<FrameObservations>& frames,
+                                                         const SparseMap& map, const std::vector<Vector6>& extrinsics,
+                                                         double kappa) const {
+  const LongRangeInitializerOptions& o = options_;
+  Batch batch{std::make_unique<BundleGraph>(rig, map, 1, o.bundle), {}, {}};
+  BundleGraph& bundle = *batch.bundle;
+  for (int k = 1; k <= rig.secondaryCount(); ++k) bundle.addExtrinsic(k, extrinsics[k - 1], false);
+  if (o.estimateScale) {
+    bundle.addScale(kappa);
+    bundle.holdDistance(0, 1);
+  }
+  for (int i = 0; i < o.frames; ++i) bundle.addObservations(i, frames[i]);
+  batch.bounds = bundle.extrinsicBounds();
+  batch.summary = optimizeWithBounds(bundle.graph(), o.solver, batch.bounds, o.constraintMethod, o.constraintSettings);
+  return batch;
+}
+
 InitializationResult LongRangeInitializer::addSecondaryCameras(const Rig& rig,
                                                                const std::vector<FrameObservations>& frames,
                                                                const SparseMap& monocularMap) const {
   const LongRangeInitializerOptions& o = options_;
-  InitializationResult result;
-  BundleGraph bundle(rig, monocularMap, 1, o.bundle);
-  for (int k = 1; k <= rig.secondaryCount(); ++k) bundle.addExtrinsic(k, rig.extrinsics[k - 1], false);
-  if (o.estimateScale) {
-    bundle.addScale(o.initialKappa);
-    bundle.holdDistance(0, 1);
+  Batch batch = adjust(rig, frames, monocularMap, rig.extrinsics, o.initialKappa);
+
+  // A track that is no fixed point, or a wrong stereo match, misses by pixels
+  // to tens of pixels among sub-pixel errors; the robust kernel bounds its
+  // pull, but not the RMS the checks and the choice between motions read. As
+  // in the sliding window, a base-camera outlier takes its track out and a
+  // secondary one that observation; the batch then runs once more without
+  // them, from where it ended.
+  const WindowOutliers outliers = findWindowOutliers(
+      batch.bundle->projectionErrors(), static_cast<int>(rig.cameras.size()), o.outliers, batch.summary.converged());
+  if (!outliers.rejectedTracks.empty() || !outliers.secondaryOutliers.empty()) {
+    std::vector<FrameObservations> inliers(frames.begin(), frames.begin() + o.frames);
+    for (std::size_t i = 0; i < inliers.size(); ++i)
+      std::erase_if(inliers[i].observations, [&](const Observation& observation) {
+        return outliers.condemns(static_cast<int>(i), observation);
+      });
+    SparseMap map = batch.bundle->map();
+    for (int track : outliers.rejectedTracks) map.points.erase(track);
+    const double kappa = o.estimateScale ? batch.bundle->scale()->kappa() : 1.0;
+    Batch again = adjust(rig, inliers, map, batch.bundle->extrinsics(), kappa);
+    appendSummary(batch.summary, again.summary);
+    again.summary = std::move(batch.summary);
+    batch = std::move(again);
   }
-  for (int i = 0; i < o.frames; ++i) bundle.addObservations(i, frames[i]);
-  const Bounds bounds = bundle.extrinsicBounds();
-  result.summary = optimizeWithBounds(bundle.graph(), o.solver, bounds, o.constraintMethod, o.constraintSettings);
+
+  InitializationResult result;
+  result.summary = batch.summary;
+  BundleGraph& bundle = *batch.bundle;
+  const Bounds& bounds = batch.bounds;
   result.rmsReprojectionError_px = bundle.rmsReprojectionError_px();
   result.extrinsics = bundle.extrinsics();
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "lrsvo/frontend/odometry/initialization_result.h"
 #include "lrsvo/frontend/odometry/monocular_initializer.h"
 #include "lrsvo/frontend/odometry/observations.h"
+#include "lrsvo/frontend/odometry/outlier_threshold.h"
 #include "lrsvo/frontend/odometry/rig.h"
 #include "lrsvo/graph/solver_options.h"
 
@@ -17,7 +19,9 @@ namespace lrsvo {
 struct LongRangeInitializerOptions {
   int frames = 10;                               // base frames from the first (paper: 10)
   std::string constraintMethod = "log_barrier";  // "name[:setting=value,...]" (makeConstraintMethod)
-  ConstraintSettings constraintSettings;
+  // kProject: the batch that runs again without the outliers starts where
+  // the first ended, which may lie nearer a bound than the interior margin.
+  ConstraintSettings constraintSettings{.start = StartPolicy::kProject};
   // The batch adjustment (its iteration cap per barrier round); the monocular
   // start uses the same algorithm and linear solver.
   SolverOptions solver{.linearSolver = "schur_dense", .lm = {}, .maxIterations = 100};
@@ -39,14 +43,21 @@ struct LongRangeInitializerOptions {
   double maxKappaRelativeStd = 0.1;         // the metric scale's standard deviation over its value
   MonocularOptions monocular;               // its frames, initialBaseline, solver, bundle and seed are set from here
   BundleGraphOptions bundle;
+  // The observations the batch gives up after its first solve, as the
+  // sliding window judges its own (findWindowOutliers).
+  OutlierTestOptions outliers;
   std::uint64_t seed = 1;
 };
 
 // The long-range initialisation (docs/method.md, Fig. 14; paper Section 4.3):
 //  1. monocular VO over the base camera of the first N frames, the first
 //     pair at distance initialBaseline (buildMonocularMaps: one map per
-//     motion hypothesis of the pair; steps 2-5 run on each, and the one with
-//     the lowest RMS reprojection error is the result);
+//     motion hypothesis of the pair; steps 2-5 run on each, and of those
+//     that pass the checks of step 4 the one with the lowest RMS
+//     reprojection error is the result: with kappa free, the wrong motion
+//     can fit well by letting kappa grow without bound, the baseline shrink
+//     to nothing and S's rotation take up the disparity, which step 4's
+//     conditioning check rejects);
 //  2. every secondary observation of a mapped point joins the graph
 //     (EdgeProjectSecondaryScaled through one VertexStereoExtrinsic per
 //     secondary camera, starting at calibration and bounded by the rig's
@@ -54,7 +65,10 @@ struct LongRangeInitializerOptions {
 //  3. one batch adjustment over poses, points, extrinsics and kappa within
 //     the bounds (optimizeWithBounds). Gauge: pose 0 held, and the distance
 //     between poses 0 and 1 held, since scaling the map by a and kappa by
-//     1 / a changes no projection;
+//     1 / a changes no projection. Outliers among its errors (the sliding
+//     window's test: a base-camera outlier takes its track out, a secondary
+//     one that observation) are then left out, and the batch runs again from
+//     where it ended;
 //  4. checks: the solve converged, the RMS reprojection error is within its
 //     limit, kappa is finite, positive and well conditioned: the relative
 //     standard deviation of the metric first-to-last camera distance (kappa
@@ -81,6 +95,16 @@ class LongRangeInitializer {
   InitializationResult initialize(const Rig& rig, const std::vector<FrameObservations>& frames) const;
 
  private:
+  using Vector6 = VertexStereoExtrinsic::Vector6;
+  // One solve of step 3: the graph, the bounds it kept and its summary.
+  struct Batch {
+    std::unique_ptr<BundleGraph> bundle;
+    Bounds bounds;
+    SolverSummary summary;
+  };
+  // Steps 2-3 on `map` (in its own unit), S and kappa starting at the given values.
+  Batch adjust(const Rig& rig, const std::vector<FrameObservations>& frames, const SparseMap& map,
+               const std::vector<Vector6>& extrinsics, double kappa) const;
   // Steps 2-5 on one monocular map.
   InitializationResult addSecondaryCameras(const Rig& rig, const std::vector<FrameObservations>& frames,
                                            const SparseMap& monocularMap) const;

@@ -176,10 +176,7 @@ int SlidingWindow::removeOutliers(const WindowOutliers& outliers) {
   for (std::size_t i = 0; i < keyframes_.size(); ++i) {
     auto& observations = keyframes_[i].observations.observations;
     const auto before = observations.size();
-    std::erase_if(observations, [&](const Observation& o) {
-      return outliers.rejectedTracks.count(o.track) ||
-             (o.camera != 0 && outliers.secondaryOutliers.count({static_cast<int>(i), o.track}));
-    });
+    std::erase_if(observations, [&](const Observation& o) { return outliers.condemns(static_cast<int>(i), o); });
     removed += static_cast<int>(before - observations.size());
   }
   for (int track : outliers.rejectedTracks) points_.erase(track);

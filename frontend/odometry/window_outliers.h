@@ -18,6 +18,13 @@ struct WindowOutliers {
   std::map<int, double> offKeyframes;
   std::set<int> rejectedTracks;                     // a base-camera outlier condemns its track
   std::set<std::pair<int, int>> secondaryOutliers;  // (keyframe, track): a secondary outlier, that observation only
+
+  // Whether keyframe `keyframe`'s observation goes: its track is rejected, or
+  // it is a secondary outlier.
+  bool condemns(int keyframe, const Observation& observation) const {
+    return rejectedTracks.count(observation.track) ||
+           (observation.camera != 0 && secondaryOutliers.count({keyframe, observation.track}));
+  }
 };
 
 // Finds the outliers among a window's errors. Each camera's threshold comes

@@ -385,16 +385,37 @@ TEST(Constraints, BoundsOnAPoseAreRejected) {
   return ::testing::AssertionSuccess();
 }
 
-// LM under the barrier accepts only steps that lower F = E + barrier (steps
-// leaving the box have F = +inf and are rejected, lambda grows): one round
-// at a fixed small mu.
-TEST(Constraints, LogBarrierNeverAcceptsACostIncrease) {
+// LM under the barrier accepts only steps that lower F = E + barrier, and
+// never spends an iteration on a point outside the box: a step that would
+// take a parameter out of it, or onto its bound, goes a fraction of the way
+// there instead, so every trial F is finite. One round at a fixed small mu,
+// on a window whose unconstrained roll and yaw lie outside the box: both end
+// pressed against their bounds, within the barrier's reach of them.
+TEST(Constraints, LogBarrierNeverAcceptsACostIncreaseNorTriesAPointOutsideTheBox) {
   WindowProblem problem = makeWindowProblem(windowFor(Size::kSmall, Box::kActive));
   const SolverSummary summary =
       optimizeWithBounds(problem.graph, tightOptions(), problem.extrinsicBounds, "log_barrier:mu=1e-4,rounds=1");
-  EXPECT_GT(summary.unsuccessfulSteps, 0) << "no step ever left the box: the test shows nothing";
+  EXPECT_TRUE(summary.converged()) << summary.fullReport();
   EXPECT_TRUE(costsNeverRise(summary));
+  for (const IterationRecord& record : summary.iterations)
+    EXPECT_TRUE(std::isfinite(record.costChange))
+        << "iteration " << record.iteration << " tried a point outside the box";
   EXPECT_TRUE(problem.extrinsicBounds.hold());
+  const auto& bounds = problem.extrinsicBounds.all();
+  EXPECT_GT(Bounds::value(bounds[3]), bounds[3].upper - 0.01 * bounds[3].halfWidth()) << "roll";
+  EXPECT_LT(Bounds::value(bounds[5]), bounds[5].lower + 0.01 * bounds[5].halfWidth()) << "yaw";
+}
+
+// boundary_fraction is a fraction of the way to a bound: 0 would never move
+// a bounded parameter, 1 would step onto the bound, where the barrier is +inf.
+TEST(Constraints, LogBarrierBoundaryFractionLiesBetweenZeroAndOne) {
+  for (const char* fraction : {"0", "1", "1.5", "-0.5"}) {
+    WindowProblem problem = makeWindowProblem(windowFor(Size::kSmall, Box::kActive));
+    EXPECT_THROW(optimizeWithBounds(problem.graph, tightOptions(), problem.extrinsicBounds,
+                                    std::string("log_barrier:boundary_fraction=") + fraction),
+                 Error)
+        << fraction;
+  }
 }
 
 // The barrier's later rounds start where the previous round stopped: strictly
