@@ -27,6 +27,9 @@ struct InitializationResult {
   // first to the last camera) from the information; 0 when kappa is not estimated.
   double kappa = 1.0;
   double kappaRelativeStd = 0.0;
+  // It failed only because kappaRelativeStd exceeds its limit: the frames fit,
+  // and more frames of the same flight would tell the scale better.
+  bool scaleTooUncertain = false;
   SolverSummary summary;                 // the final bundle adjustment
   double rmsReprojectionError_px = 0.0;  // per image coordinate, over every observation in that adjustment
 };

@@ -173,9 +173,11 @@ InitializationResult LongRangeInitializer::addSecondaryCameras(const Rig& rig,
     } catch (const Error&) {
       result.kappaRelativeStd = std::numeric_limits<double>::infinity();
     }
-    if (failure.empty() && !(result.kappaRelativeStd <= o.maxKappaRelativeStd))
+    if (failure.empty() && !(result.kappaRelativeStd <= o.maxKappaRelativeStd)) {
       failure = "kappa is poorly conditioned: relative standard deviation " + format("%.3g", result.kappaRelativeStd) +
                 " exceeds " + format("%.3g", o.maxKappaRelativeStd);
+      result.scaleTooUncertain = true;
+    }
   }
   for (auto& extrinsic : result.extrinsics) extrinsic.head<3>() *= toCalibratedLength;
   SparseMap map = bundle.map();

@@ -1,5 +1,6 @@
 #include "lrsvo/frontend/odometry/odometry.h"
 
+#include <cmath>
 #include <cstdio>
 #include <utility>
 
@@ -37,6 +38,7 @@ Odometry::Odometry(Rig rig, OdometryOptions options)
   if (rig_.secondaryCount() < 1) throw Error("odometry: the rig needs a secondary camera");
   options_.validate();
   LongRangeInitializer{options_.initializer};  // validates its options now rather than at the first frame
+  samplesWanted_ = options_.initializer.frames;
 }
 
 std::vector<FrameEstimate> Odometry::process(const FrameObservations& frame, const SecondaryObservations& secondary) {
@@ -82,7 +84,7 @@ std::vector<FrameEstimate> Odometry::estimate(const FrameObservations& frame, co
     pending_.push_back(frame);
   }
   pendingIndices_.push_back(index);
-  if (static_cast<int>(samples_.size()) < options_.initializer.frames) return {};
+  if (static_cast<int>(samples_.size()) < samplesWanted_) return {};
   return initialize();
 }
 
@@ -91,9 +93,11 @@ std::vector<FrameEstimate> Odometry::finish() { return settled(givePendingUp());
 std::vector<FrameEstimate> Odometry::givePendingUp() {
   std::vector<FrameEstimate> estimates;
   for (std::size_t i = 0; i < pending_.size(); ++i) estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
+  if (!estimates.empty()) estimates.front().times.initialize_ms += std::exchange(initializeMsUnreported_, 0.0);
   pending_.clear();
   pendingIndices_.clear();
   samples_.clear();
+  samplesWanted_ = options_.initializer.frames;
   return estimates;
 }
 
@@ -127,18 +131,33 @@ FrameEstimate Odometry::untracked(const FrameObservations& frame, int index) con
   return estimate;
 }
 
+bool Odometry::moreSamplesCouldSettleTheScale(const InitializationResult& result) const {
+  const double samples = static_cast<double>(samples_.size());
+  const double most = static_cast<double>(options_.maxInitializationFrames);
+  return result.scaleTooUncertain && samples < most &&
+         result.kappaRelativeStd * std::sqrt(samples / most) <= options_.initializer.maxKappaRelativeStd;
+}
+
 std::vector<FrameEstimate> Odometry::initialize() {
   const Stopwatch start;
   std::vector<FrameObservations> sampled;
   for (std::size_t position : samples_) sampled.push_back(pending_[position]);
   LongRangeInitializerOptions initializerOptions = options_.initializer;
+  initializerOptions.frames = static_cast<int>(sampled.size());
   initializerOptions.seed =
       mixSeed(options_.seed, kInitializerStream, static_cast<std::uint64_t>(pendingIndices_.front()));
   const InitializationResult result = LongRangeInitializer(initializerOptions).initialize(rig_, sampled);
 
   std::vector<FrameEstimate> estimates;
+  if (!result.success && moreSamplesCouldSettleTheScale(result)) {
+    // This attempt's time is reported with the attempt that settles the start.
+    initializeMsUnreported_ += start.milliseconds();
+    ++samplesWanted_;
+    return estimates;
+  }
   if (!result.success) {
-    // Give up the frames before the second sample and try again from it.
+    // Give up the frames before the second sample and try again from it,
+    // with as many samples as this attempt had.
     const std::size_t givenUp = samples_[1];
     for (std::size_t i = 0; i < givenUp; ++i) {
       estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
@@ -148,9 +167,10 @@ std::vector<FrameEstimate> Odometry::initialize() {
     pendingIndices_.erase(pendingIndices_.begin(), pendingIndices_.begin() + static_cast<std::ptrdiff_t>(givenUp));
     samples_.erase(samples_.begin());
     for (std::size_t& position : samples_) position -= givenUp;
-    estimates.front().times.initialize_ms = start.milliseconds();
+    estimates.front().times.initialize_ms = std::exchange(initializeMsUnreported_, 0.0) + start.milliseconds();
     return estimates;
   }
+  samplesWanted_ = options_.initializer.frames;
 
   // The new segment's world is its first camera; place it where the last
   // segment's motion, carried on, puts that camera.
@@ -164,7 +184,7 @@ std::vector<FrameEstimate> Odometry::initialize() {
   window_.reset(keyframes, std::move(points), result.extrinsics, result.kappaRelativeStd);
   ++segment_;
   tracking_ = true;
-  const double initialize_ms = start.milliseconds();
+  const double initialize_ms = std::exchange(initializeMsUnreported_, 0.0) + start.milliseconds();
 
   for (std::size_t i = 0, sample = 0; i < pending_.size(); ++i) {
     FrameEstimate estimate;

@@ -23,8 +23,10 @@ namespace lrsvo {
 //    its stereo structure starts the map at once, with no wait for motion;
 //  - initialising: otherwise frames are buffered until the long-range initialiser has
 //    its N frames (one each initializationInterval_s); on success every buffered
-//    frame gets a pose and the initialised frames fill the window; on failure
-//    the oldest buffered frames are given up (untracked) and it tries again;
+//    frame gets a pose and the initialised frames fill the window; when only its
+//    scale is too uncertain it waits for one more sample and tries again with
+//    all of them (up to maxInitializationFrames); on any other failure the
+//    oldest buffered frames are given up (untracked) and it tries again;
 //  - tracking: each frame's pose by P3P in MLESAC from base observations of
 //    mapped points; a keyframe (KeyframePolicy) joins the sliding window, new
 //    tracks seen in >= 3 keyframes are triangulated, the window is adjusted
@@ -77,6 +79,10 @@ class Odometry {
   // Where a new segment's first camera (at time t) goes: the motion so far carried on (identity at the start).
   Eigen::Isometry3d segmentPlacement(double time_s) const;
   std::vector<FrameEstimate> initialize();
+  // Whether a start that failed only on its scale's std may reach the limit
+  // with more samples: the std falls about as 1 / sqrt(samples), and at most
+  // maxInitializationFrames are taken.
+  bool moreSamplesCouldSettleTheScale(const InitializationResult& result) const;
   // The frames buffered for an initialisation, without a pose, in frame order;
   // the buffer is emptied.
   std::vector<FrameEstimate> givePendingUp();
@@ -103,8 +109,10 @@ class Odometry {
   // Buffered while initialising: the frames and their indices.
   std::vector<FrameObservations> pending_;
   std::vector<int> pendingIndices_;
-  std::vector<std::size_t> samples_;  // the initialiser's samples: positions in pending_
-  ConstantVelocity motion_;           // of the measured poses
+  std::vector<std::size_t> samples_;     // the initialiser's samples: positions in pending_
+  int samplesWanted_ = 0;                // the next attempt's sample count (initializer.frames, or more)
+  double initializeMsUnreported_ = 0.0;  // attempts not yet reported in a frame's times
+  ConstantVelocity motion_;              // of the measured poses
   std::vector<int> rejectedTracks_;
 };
 

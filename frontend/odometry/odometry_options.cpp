@@ -36,6 +36,8 @@ void OdometryOptions::validate() const {
   require(extrinsicRateSigma >= 0.0 && std::isfinite(extrinsicRateSigma),
           "extrinsicRateSigma must be finite and not negative");
   require(initializer.frames <= windowSize, "the initialiser's frames must fit the window");
+  require(maxInitializationFrames >= initializer.frames,
+          "maxInitializationFrames must be at least the initialiser's frames");
   require(solver.maxIterations >= 1, "solver.maxIterations must be positive");
   lrsvo::validate(outliers);
   require(minTriangulationViews >= 2, "minTriangulationViews must be at least 2");

@@ -112,6 +112,14 @@ struct OdometryOptions {
   // same geometry, at any frame rate.
   LongRangeInitializerOptions initializer;
   double initializationInterval_s = 0.1;
+  // When the long-range start fails only because its scale is too uncertain
+  // (kappa's relative std above initializer.maxKappaRelativeStd), the start
+  // takes one more sample and tries again, keeping its frames, as long as the
+  // std could fall to the limit within this many samples (it falls about as
+  // one over the square root of their count); past that, the oldest frames
+  // are given up as for any failure. The window keeps the newest windowSize
+  // of the start's keyframes; the ones before are held views.
+  int maxInitializationFrames = 30;
 
   std::uint64_t seed = 1;
 

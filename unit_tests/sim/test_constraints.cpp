@@ -475,9 +475,11 @@ std::map<std::string, std::string> settingsOf(const ConstraintMethod& method) {
 
 TEST(ConstraintSpecification, NamesAMethodAndAnyOfItsOwnSettings) {
   EXPECT_EQ(settingsOf(*makeConstraintMethod("log_barrier")),
-            (std::map<std::string, std::string>{{"decrease", "0.1"}, {"mu", "0.01"}, {"rounds", "3"}}));
-  EXPECT_EQ(settingsOf(*makeConstraintMethod("log_barrier:mu=1e-4,rounds=1")),
-            (std::map<std::string, std::string>{{"decrease", "0.1"}, {"mu", "1e-04"}, {"rounds", "1"}}));
+            (std::map<std::string, std::string>{
+                {"boundary_fraction", "0.995"}, {"decrease", "0.1"}, {"mu", "0.01"}, {"rounds", "3"}}));
+  EXPECT_EQ(settingsOf(*makeConstraintMethod("log_barrier:mu=1e-4,rounds=1,boundary_fraction=0.9")),
+            (std::map<std::string, std::string>{
+                {"boundary_fraction", "0.9"}, {"decrease", "0.1"}, {"mu", "1e-04"}, {"rounds", "1"}}));
   EXPECT_EQ(settingsOf(*makeConstraintMethod("nlopt_mma:evaluations=50")),
             (std::map<std::string, std::string>{{"evaluations", "50"}, {"rounds", "20"}}));
   EXPECT_TRUE(makeConstraintMethod("gradient_projection")->ownSettings().empty());

@@ -6,6 +6,7 @@
 
 #include "lrsvo/frontend/odometry/bundle_graph.h"
 #include "lrsvo/frontend/odometry/keyframe_policy.h"
+#include "lrsvo/frontend/odometry/long_range_initializer.h"
 #include "lrsvo/frontend/odometry/odometry.h"
 #include "lrsvo/frontend/odometry/sliding_window.h"
 #include "lrsvo/graph/error.h"
@@ -194,6 +195,42 @@ TEST(OdometryFlight, StartSamplesTheSameStretchOfFlightAtTenHertz) {
   }
   EXPECT_EQ(std::count_if(estimates.begin(), estimates.end(), [](const FrameEstimate& e) { return !e.tracked; }), 0);
   EXPECT_LT(finalErrorFraction(estimates, sequence), 0.05);
+}
+
+// A start whose scale is too uncertain, though its frames fit, takes more
+// samples rather than giving frames up: kappa's std falls about as one over
+// the root of the samples. The limit is set just below what the first ten
+// samples give, so that ten fail on it alone and a few more pass; with the
+// start held to ten samples the same flight gives its first frames up.
+TEST(OdometryFlight, AnUncertainStartTakesMoreSamplesInsteadOfGivingFramesUp) {
+  FeatureSimulationOptions options;
+  options.flight.altitude_m = 100.0;
+  options.flight.speed_m_s = 20.0;
+  options.flight.frameRate_hz = 10.0;
+  options.flight.legs = {{FlightLeg::Kind::Straight, 120.0}};
+  options.terrain.treeDensity_per_km2 = 0.0;
+  options.pixelNoise_px = 1.0;
+  options.deformation.offset << 5e-4, -4e-4, 3e-4, -3e-3, 4e-3, 5e-3;
+  const SimulatedSequence sequence = simulateSequence(options);
+  OdometryOptions odometry;
+  const int samples = odometry.initializer.frames;
+  const std::vector<FrameObservations> first(sequence.frames.begin(), sequence.frames.begin() + samples);
+  const InitializationResult tenSamples = LongRangeInitializer(odometry.initializer).initialize(sequence.rig, first);
+  ASSERT_TRUE(tenSamples.success) << tenSamples.failure;
+  odometry.initializer.maxKappaRelativeStd = 0.85 * tenSamples.kappaRelativeStd;
+
+  const std::vector<FrameEstimate> estimates = runOver(sequence.frames, sequence.rig, odometry);
+  ASSERT_EQ(estimates.size(), sequence.frames.size());
+  EXPECT_EQ(std::count_if(estimates.begin(), estimates.end(), [](const FrameEstimate& e) { return !e.tracked; }), 0);
+  EXPECT_GT(estimates.front().windowFrames, samples);  // the start's samples, all in the window
+  EXPECT_LE(estimates.front().windowFrames, odometry.windowSize);
+  EXPECT_LT(finalErrorFraction(estimates, sequence), 0.05);
+
+  odometry.maxInitializationFrames = samples;
+  const std::vector<FrameObservations> start(sequence.frames.begin(), sequence.frames.begin() + samples + 2);
+  const std::vector<FrameEstimate> heldToTen = runOver(start, sequence.rig, odometry);
+  EXPECT_FALSE(heldToTen.front().tracked);
+  EXPECT_NE(heldToTen.front().note.find("kappa is poorly conditioned"), std::string::npos) << heldToTen.front().note;
 }
 
 // Frames with nothing in them lose tracking. Without relocalisation the
