@@ -10,6 +10,21 @@ namespace lrsvo {
 
 void ConstraintMethod::begin(Graph&) { enforceStart(needsInteriorStart()); }
 
+bool ConstraintMethod::limitBoundedSteps(const BlockSystem& system, Eigen::VectorXd& dx, const StepLimit& limit) const {
+  bool changed = false;
+  for (const Bounds::Bound& bound : bounds_.all()) {
+    const int block = system.blockOf(bound.vertex);
+    if (block < 0) continue;
+    double& step = dx[system.offset(block) + bound.index];
+    const double limited = limit(bound, Bounds::value(bound), step);
+    if (limited != step) {
+      step = limited;
+      changed = true;
+    }
+  }
+  return changed;
+}
+
 void ConstraintMethod::enforceStart(bool interior) const {
   for (const Bounds::Bound& bound : bounds_.all()) {
     const double x = Bounds::value(bound);

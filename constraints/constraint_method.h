@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <variant>
@@ -83,6 +84,10 @@ class ConstraintMethod : public ConstraintHandler {
   // Applies the start policy; `interior` asks for a strictly interior start.
   void enforceStart(bool interior) const;
   virtual bool needsInteriorStart() const { return false; }
+  // Sets the step of every bounded parameter the solve holds to
+  // limit(bound, value, step); true when any step changed.
+  using StepLimit = std::function<double(const Bounds::Bound&, double value, double step)>;
+  bool limitBoundedSteps(const BlockSystem& system, Eigen::VectorXd& dx, const StepLimit& limit) const;
   // Declares a setting of the method's own (in its constructor): its name,
   // the member holding its value (which is also the default), its meaning.
   void declare(std::string name, double* value, std::string description);

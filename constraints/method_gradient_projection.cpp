@@ -28,19 +28,9 @@ class GradientProjection : public ConstraintMethod {
   }
 
   bool adjustStep(const BlockSystem& system, Eigen::VectorXd& dx) override {
-    bool changed = false;
-    for (const Bounds::Bound& bound : bounds_.all()) {
-      const int block = system.blockOf(bound.vertex);
-      if (block < 0) continue;
-      double& step = dx[system.offset(block) + bound.index];
-      const double x = Bounds::value(bound);
-      const double projected = std::clamp(x + step, bound.lower, bound.upper) - x;
-      if (projected != step) {
-        step = projected;
-        changed = true;
-      }
-    }
-    return changed;
+    return limitBoundedSteps(system, dx, [](const Bounds::Bound& bound, double x, double step) {
+      return std::clamp(x + step, bound.lower, bound.upper) - x;
+    });
   }
 
   // x + (clamp(x + dx) - x) can miss the bound by rounding: put it on exactly.

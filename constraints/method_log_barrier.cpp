@@ -34,19 +34,10 @@ class LogBarrier : public ConstraintMethod {
   }
 
   bool adjustStep(const BlockSystem& system, Eigen::VectorXd& dx) override {
-    bool changed = false;
-    for (const Bounds::Bound& bound : bounds_.all()) {
-      const int block = system.blockOf(bound.vertex);
-      if (block < 0) continue;
-      double& step = dx[system.offset(block) + bound.index];
-      const double x = Bounds::value(bound);
+    return limitBoundedSteps(system, dx, [this](const Bounds::Bound& bound, double x, double step) {
       const double room = boundaryFraction_ * (step > 0.0 ? bound.upper - x : x - bound.lower);
-      if (std::abs(step) > room) {
-        step = std::copysign(room, step);
-        changed = true;
-      }
-    }
-    return changed;
+      return std::abs(step) > room ? std::copysign(room, step) : step;
+    });
   }
 
   // The rounds share one optimizer and one set of barrier edges (only mu
