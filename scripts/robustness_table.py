@@ -36,6 +36,11 @@ CONDITIONS = [  # key, what, source, extra options
     ("bad_frames", "blank, corrupt, dropped frames", "sim:sim/scenarios/bad_frames.yaml", []),
     ("dark", "dark frames: 1, 2 and 5 in a row", "sim:sim/scenarios/dark_frames.yaml", []),
     ("gap", "3 s holes: 90 frames dropped, 90 blank", "sim:sim/scenarios/gap.yaml", []),
+    ("sensor_vga", "640x480 camera (the demo, 25 Hz)", "sim:sim/scenarios/sensor_vga.yaml", []),
+    ("sensor_wide", "752x480 wide-angle camera (60 m, 20 Hz)", "sim:sim/scenarios/sensor_wide.yaml", []),
+    ("sensor_noisy", "noisy, blurred, vignetted images (80 m, 20 Hz)", "sim:sim/scenarios/sensor_noisy.yaml", []),
+    ("hills", "30 m of relief (100 m, 15 Hz)", "sim:sim/scenarios/hills.yaml", []),
+    ("fast", "35 m/s with a turn (100 m, 15 Hz)", "sim:sim/scenarios/fast.yaml", []),
     ("stress", "sim:stress (all of them, 30-150 m)", "sim:stress", []),
     ("euroc", "EuRoC V1_01 (real, still, 1-5 m)", EUROC, ["--min-depth", "0.5"]),
     ("paper", "smooth (sim:paper, 9600 frames, 37-118 m)", "sim:paper", []),  # minutes a run
