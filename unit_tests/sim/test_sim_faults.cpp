@@ -134,6 +134,13 @@ TEST(SimFaults, ShippedStressScenariosLoadAndFly) {
   EXPECT_DOUBLE_EQ(low.flight.frameRate_hz, 10.0);
   EXPECT_DOUBLE_EQ(low.flight.altitude_m, 30.0);
   EXPECT_DOUBLE_EQ(loadScenario((folder / "high150_10hz.yaml").string()).flight.altitude_m, 150.0);
+  const SimScenario vga = loadScenario((folder / "sensor_vga.yaml").string());
+  EXPECT_EQ(vga.rig.cameras[0].width, 640);
+  EXPECT_EQ(vga.rig.cameras[1].height, 480);
+  EXPECT_EQ(loadScenario((folder / "sensor_wide.yaml").string()).rig.cameras[0].width, 752);
+  EXPECT_DOUBLE_EQ(loadScenario((folder / "sensor_noisy.yaml").string()).render.noiseSigma_grey, 6.0);
+  EXPECT_DOUBLE_EQ(loadScenario((folder / "hills.yaml").string()).terrain.relief_m, 30.0);
+  EXPECT_DOUBLE_EQ(loadScenario((folder / "fast.yaml").string()).flight.speed_m_s, 35.0);
 }
 
 TEST(SimFaults, BadFaultsAreNamed) {
