@@ -77,6 +77,21 @@ double largestStepError(const std::vector<FrameEstimate>& estimates, const Simul
   return largest;
 }
 
+// 120 m straight and level at 100 m, 20 m/s and 10 Hz over open ground, the
+// rig flexed within its bounds.
+FeatureSimulationOptions tenHertzStraightAt100m(double attitudeNoise_rad) {
+  FeatureSimulationOptions options;
+  options.flight.altitude_m = 100.0;
+  options.flight.speed_m_s = 20.0;
+  options.flight.frameRate_hz = 10.0;
+  options.flight.legs = {{FlightLeg::Kind::Straight, 120.0}};
+  options.flight.attitudeNoise_rad = attitudeNoise_rad;
+  options.terrain.treeDensity_per_km2 = 0.0;
+  options.pixelNoise_px = 1.0;
+  options.deformation.offset << 5e-4, -4e-4, 3e-4, -3e-3, 4e-3, 5e-3;
+  return options;
+}
+
 TEST(KeyframePolicy, MotionSharedTracksAndInterval) {
   FrameObservations last, frame;
   last.time_s = 10.0;
@@ -176,16 +191,7 @@ TEST(OdometryFlight, HeldKeyframesStopTheWindowJumpingAtLongRange) {
 // and the flight ends as close to the truth as the 30 Hz flight above
 // requires (5 % of the distance: the long-range start's scale at 100 m).
 TEST(OdometryFlight, StartSamplesTheSameStretchOfFlightAtTenHertz) {
-  FeatureSimulationOptions options;
-  options.flight.altitude_m = 100.0;
-  options.flight.speed_m_s = 20.0;
-  options.flight.frameRate_hz = 10.0;
-  options.flight.legs = {{FlightLeg::Kind::Straight, 120.0}};
-  options.flight.attitudeNoise_rad = 0.01;
-  options.terrain.treeDensity_per_km2 = 0.0;
-  options.pixelNoise_px = 1.0;
-  options.deformation.offset << 5e-4, -4e-4, 3e-4, -3e-3, 4e-3, 5e-3;
-  const SimulatedSequence sequence = simulateSequence(options);
+  const SimulatedSequence sequence = simulateSequence(tenHertzStraightAt100m(0.01));
   const OdometryOptions odometry;
   const std::vector<FrameEstimate> estimates = runOver(sequence.frames, sequence.rig, odometry);
   const int samples = odometry.initializer.frames;
@@ -203,15 +209,7 @@ TEST(OdometryFlight, StartSamplesTheSameStretchOfFlightAtTenHertz) {
 // samples give, so that ten fail on it alone and a few more pass; with the
 // start held to ten samples the same flight gives its first frames up.
 TEST(OdometryFlight, AnUncertainStartTakesMoreSamplesInsteadOfGivingFramesUp) {
-  FeatureSimulationOptions options;
-  options.flight.altitude_m = 100.0;
-  options.flight.speed_m_s = 20.0;
-  options.flight.frameRate_hz = 10.0;
-  options.flight.legs = {{FlightLeg::Kind::Straight, 120.0}};
-  options.terrain.treeDensity_per_km2 = 0.0;
-  options.pixelNoise_px = 1.0;
-  options.deformation.offset << 5e-4, -4e-4, 3e-4, -3e-3, 4e-3, 5e-3;
-  const SimulatedSequence sequence = simulateSequence(options);
+  const SimulatedSequence sequence = simulateSequence(tenHertzStraightAt100m(0.0));
   OdometryOptions odometry;
   const int samples = odometry.initializer.frames;
   const std::vector<FrameObservations> first(sequence.frames.begin(), sequence.frames.begin() + samples);
