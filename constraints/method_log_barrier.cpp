@@ -22,7 +22,8 @@ namespace {
 // the step fits inside, and shrink every other parameter's step with it, so
 // a parameter the data push against a bound (a weakly observed centre
 // coordinate, an angle that trades off against the scale) would hold the
-// whole adjustment to short steps.
+// whole adjustment to short steps. boundary_fraction = 1 tries every step
+// whole, the plain barrier, for comparison.
 class LogBarrier : public ConstraintMethod {
  public:
   LogBarrier() {
@@ -30,10 +31,12 @@ class LogBarrier : public ConstraintMethod {
     declare("decrease", &decrease_, "factor on mu after each round");
     declare("rounds", &rounds_, "outer solves, each from the last one's iterate (1: mu fixed)");
     declare("boundary_fraction", &boundaryFraction_,
-            "the fraction of its distance to a bound a step may take a parameter, in (0, 1)");
+            "the fraction of its distance to a bound a step may take a parameter, in (0, 1]; "
+            "1: steps tried whole, one reaching the bound rejected");
   }
 
   bool adjustStep(const BlockSystem& system, Eigen::VectorXd& dx) override {
+    if (boundaryFraction_ == 1.0) return false;
     return limitBoundedSteps(system, dx, [this](const Bounds::Bound& bound, double x, double step) {
       const double room = boundaryFraction_ * (step > 0.0 ? bound.upper - x : x - bound.lower);
       return std::abs(step) > room ? std::copysign(room, step) : step;
@@ -66,8 +69,8 @@ class LogBarrier : public ConstraintMethod {
   }
 
   void begin(Graph& graph) override {
-    if (!(boundaryFraction_ > 0.0 && boundaryFraction_ < 1.0))
-      throw Error("log_barrier: boundary_fraction must lie in (0, 1), got " + std::to_string(boundaryFraction_));
+    if (!(boundaryFraction_ > 0.0 && boundaryFraction_ <= 1.0))
+      throw Error("log_barrier: boundary_fraction must lie in (0, 1], got " + std::to_string(boundaryFraction_));
     // Later rounds start from the previous round's iterate, strictly inside
     // because its barrier cost was finite, however close to a bound.
     if (round_ == 0) enforceStart(true);

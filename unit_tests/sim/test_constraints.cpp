@@ -407,15 +407,30 @@ TEST(Constraints, LogBarrierNeverAcceptsACostIncreaseNorTriesAPointOutsideTheBox
 }
 
 // boundary_fraction is a fraction of the way to a bound: 0 would never move
-// a bounded parameter, 1 would step onto the bound, where the barrier is +inf.
-TEST(Constraints, LogBarrierBoundaryFractionLiesBetweenZeroAndOne) {
-  for (const char* fraction : {"0", "1", "1.5", "-0.5"}) {
+// a bounded parameter, more than 1 would step past the bound.
+TEST(Constraints, LogBarrierBoundaryFractionLiesInZeroToOne) {
+  for (const char* fraction : {"0", "1.5", "-0.5"}) {
     WindowProblem problem = makeWindowProblem(windowFor(Size::kSmall, Box::kActive));
     EXPECT_THROW(optimizeWithBounds(problem.graph, tightOptions(), problem.extrinsicBounds,
                                     std::string("log_barrier:boundary_fraction=") + fraction),
                  Error)
         << fraction;
   }
+}
+
+// boundary_fraction = 1 is the plain barrier: a step is tried whole, so on
+// the window whose roll and yaw press against their bounds some trial steps
+// leave the box, cost +inf and are rejected. It still never accepts a cost
+// increase and ends inside the box.
+TEST(Constraints, LogBarrierWithWholeStepsRejectsThoseThatLeaveTheBox) {
+  WindowProblem problem = makeWindowProblem(windowFor(Size::kSmall, Box::kActive));
+  const SolverSummary summary = optimizeWithBounds(problem.graph, tightOptions(), problem.extrinsicBounds,
+                                                   "log_barrier:mu=1e-4,rounds=1,boundary_fraction=1");
+  EXPECT_TRUE(costsNeverRise(summary));
+  const auto outside = std::count_if(summary.iterations.begin(), summary.iterations.end(),
+                                     [](const IterationRecord& r) { return !std::isfinite(r.costChange); });
+  EXPECT_GT(outside, 0);
+  EXPECT_TRUE(problem.extrinsicBounds.hold());
 }
 
 // The barrier's later rounds start where the previous round stopped: strictly
