@@ -1,6 +1,7 @@
 #include "apps/run_setup.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "lrsvo/frontend/datasets/source_factory.h"
 #include "lrsvo/graph/error.h"
@@ -8,6 +9,15 @@
 #include "lrsvo/sim/sim_frame_source.h"
 
 namespace lrsvo::cli {
+namespace {
+
+std::string formatNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+}  // namespace
 
 void OdometrySettings::addOptions(CLI::App& command) {
   command
@@ -39,6 +49,22 @@ void OdometrySettings::addOptions(CLI::App& command) {
                   "and its rate, so a rig flexing within the window is followed (0: one constant S per window, the "
                   "paper's model)")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command
+      .add_option("--max-keyframe-rate", maxKeyframeRate_hz,
+                  "Most keyframes a second (each costs a window adjustment); keyframes otherwise follow the image "
+                  "motion. 0: no limit, every frame may be a keyframe")
+      ->check(CLI::Number)
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            const KeyframePolicyOptions defaults;
+            const double rate_hz = std::stod(text);
+            return rate_hz == 0.0 || rate_hz * defaults.maxInterval_s >= 1.0 - 1e-9
+                       ? std::string()
+                       : "must be 0 or at least " + formatNumber(1.0 / defaults.maxInterval_s) +
+                             " (a keyframe comes at least every " + formatNumber(defaults.maxInterval_s) + " s)";
+          },
+          "0 or >= 3"))
       ->capture_default_str();
   command.add_option("--detector", detector, "Feature detector: gftt or fast (KLT tracking), orb (descriptors)")
       ->capture_default_str();
@@ -86,6 +112,7 @@ RunOptions OdometrySettings::runOptions() const {
   odometry.anchorKeyframes = anchors;
   odometry.scaleDriftPerKeyframe = scaleDrift;
   odometry.extrinsicRateSigma = extrinsicRate;
+  odometry.keyframes.minInterval_s = maxKeyframeRate_hz > 0.0 ? 1.0 / maxKeyframeRate_hz : 0.0;
   odometry.solver.setName(solver);
   odometry.solver.threads = threads;
   odometry.seed = seed;

@@ -24,6 +24,7 @@ struct OdometrySettings {
   int anchors = 5;
   double scaleDrift = 3e-4;
   double extrinsicRate = 1.0;
+  double maxKeyframeRate_hz = 1.0 / KeyframePolicyOptions{}.minInterval_s;
   std::string detector = "gftt";
   int features = 300;
   double band_px = 8.0;

@@ -32,6 +32,7 @@ CONDITIONS = [  # key, what, source, extra options
     ("high150_10hz", "150 m throughout, 10 Hz", "sim:sim/scenarios/high150_10hz.yaml", []),
     ("low30", "30 m, 15 Hz", "sim:sim/scenarios/low30.yaml", []),
     ("low30_10hz", "30 m, 10 Hz", "sim:sim/scenarios/low30_10hz.yaml", []),
+    ("low30_30hz", "30 m, 30 Hz", "sim:sim/scenarios/low30_30hz.yaml", []),
     ("exposure", "exposure jumps of +-30 %", "sim:sim/scenarios/exposure.yaml", []),
     ("bad_frames", "blank, corrupt, dropped frames", "sim:sim/scenarios/bad_frames.yaml", []),
     ("dark", "dark frames: 1, 2 and 5 in a row", "sim:sim/scenarios/dark_frames.yaml", []),

@@ -7,7 +7,9 @@
 namespace lrsvo {
 
 bool KeyframePolicy::isKeyframe(const FrameObservations& lastKeyframe, const FrameObservations& frame) const {
-  if (frame.time_s - lastKeyframe.time_s >= options_.maxInterval_s - kFrameTimeSlack_s) return true;
+  const double interval_s = frame.time_s - lastKeyframe.time_s;
+  if (interval_s < options_.minInterval_s - kFrameTimeSlack_s) return false;
+  if (interval_s >= options_.maxInterval_s - kFrameTimeSlack_s) return true;
   std::unordered_map<int, Eigen::Vector2d> previous;
   for (const Observation& observation : lastKeyframe.observations)
     if (observation.camera == 0) previous.emplace(observation.track, observation.pixel);

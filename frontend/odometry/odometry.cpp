@@ -211,6 +211,10 @@ std::vector<FrameEstimate> Odometry::initialize() {
     estimate.windowFrames = static_cast<int>(window_.keyframes().size());
     estimates.push_back(estimate);
   }
+  char note[96];
+  std::snprintf(note, sizeof note, "long-range start over %zu samples (scale std %.2g %%)", sampled.size(),
+                100.0 * result.kappaRelativeStd);
+  estimates[samples_.front()].note = note;
   estimates.back().times.initialize_ms = initialize_ms;
   pending_.clear();
   pendingIndices_.clear();
@@ -238,6 +242,10 @@ FrameEstimate Odometry::startFromStereo(const FrameObservations& frame, int inde
   estimate.mapPoints = static_cast<int>(window_.points().size());
   estimate.windowFrames = 1;
   estimate.times.initialize_ms = begin.milliseconds();
+  char note[96];
+  std::snprintf(note, sizeof note, "stereo start at a median depth of %.0f baselines (scale std %.2g %%)",
+                start.medianDepthOverBaseline, 100.0 * start.scaleRelativeStd);
+  estimate.note = note;
   return estimate;
 }
 

@@ -49,6 +49,8 @@ void OdometryOptions::validate() const {
   stereoStart.validate();
   require(keyframes.maxInterval_s > 0.0 && std::isfinite(keyframes.maxInterval_s),
           "keyframes.maxInterval_s must be finite and > 0");
+  require(keyframes.minInterval_s >= 0.0 && keyframes.minInterval_s <= keyframes.maxInterval_s,
+          "keyframes.minInterval_s must lie in [0, keyframes.maxInterval_s]");
   try {
     (void)makeConstraintMethod(constraintMethod);
   } catch (const Error& e) {

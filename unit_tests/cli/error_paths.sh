@@ -30,11 +30,16 @@ expect_failure '^lrsvo eval: file system error: .*/dev/null/out' \
   "$lrsvo" eval "$work/poses.tum" "$work/poses.tum" --no-plot --out /dev/null/out
 expect_failure '^lrsvo bal: error: .*no_such\.txt' "$lrsvo" bal "$work/no_such.txt"
 expect_failure "^lrsvo study: error: .*no-such-study" "$lrsvo" study no-such-study --out "$work/study"
-# A bad option is the command line's error: CLI11's message and a non-zero status.
-"$lrsvo" run sim:demo --window 1 >/dev/null 2>&1
-status=$?
-if ((status == 0)); then
-  echo "FAIL: lrsvo run --window 1 exited 0"
-  failures=$((failures + 1))
-fi
+# A bad option is the command line's error: CLI11's message naming the option and a non-zero status.
+for option in "--window 1" "--max-keyframe-rate 2" "--max-keyframe-rate fast"; do
+  # shellcheck disable=SC2086 # the option and its value are two words
+  err=$("$lrsvo" run sim:demo $option 2>&1 >/dev/null)
+  status=$?
+  if ((status == 0)) || ! grep -q -- "${option%% *}" <<<"$err"; then
+    echo "FAIL: lrsvo run $option -> exit $status: $err"
+    failures=$((failures + 1))
+  else
+    echo "ok: lrsvo run $option -> exit $status"
+  fi
+done
 exit $((failures > 0))

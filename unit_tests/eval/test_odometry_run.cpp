@@ -56,6 +56,13 @@ TEST(OdometryRunEuroc, NearlyStillSequenceIsPosedWithoutInventedMotion) {
   int lines = 0;
   for (std::string line; std::getline(frames, line);) ++lines;
   EXPECT_EQ(lines, run.totals.frames + 1);
+  // The first frame's line says the segment started from stereo.
+  frames.clear();
+  frames.seekg(0);
+  std::string header, first;
+  std::getline(frames, header);
+  std::getline(frames, first);
+  EXPECT_NE(first.find(",stereo start at a median depth of "), std::string::npos) << first;
 }
 
 // The whole pipeline on a short rendered flight (the demo's world and rig

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -39,6 +40,7 @@ SimScenario startFlight(double altitude_m, double frameRate_hz, std::uint64_t se
   return scenario;
 }
 
+// The first frame is posed, and its note says how the segment started.
 void expectStartAtFirstFrame(double altitude_m, double frameRate_hz, int frames) {
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     SCOPED_TRACE(testing::Message() << altitude_m << " m, " << frameRate_hz << " Hz, seed " << seed);
@@ -51,6 +53,8 @@ void expectStartAtFirstFrame(double altitude_m, double frameRate_hz, int frames)
     EXPECT_EQ(run.totals.tracked, frames);
     ASSERT_TRUE(estimates.count(0));
     EXPECT_TRUE(estimates[0].tracked) << estimates[0].note;
+    const std::string& note = estimates[0].note;
+    EXPECT_TRUE(note.rfind("stereo start at ", 0) == 0 || note.rfind("long-range start over ", 0) == 0) << note;
     ASSERT_FALSE(estimates[0].extrinsics.empty());
     const double truePitch = source.groundTruth().extrinsics.at(0).at(0)[4];
     EXPECT_NEAR(estimates[0].extrinsics[0][4], truePitch, kMaxPitchError_rad);

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -100,7 +101,8 @@ TEST(KeyframePolicy, MotionSharedTracksAndInterval) {
     last.observations.push_back({track, 0, Eigen::Vector2d(100.0 + track, 200.0)});
     frame.observations.push_back({track, 0, Eigen::Vector2d(110.0 + track, 200.0)});  // 10 px each
   }
-  KeyframePolicy policy({.minMedianMotion_px = 30.0, .minSharedFraction = 0.7, .maxInterval_s = 0.2});
+  KeyframePolicy policy(
+      {.minMedianMotion_px = 30.0, .minSharedFraction = 0.7, .maxInterval_s = 0.2, .minInterval_s = 0.0});
   EXPECT_FALSE(policy.isKeyframe(last, frame));
   frame.time_s = 10.0 + 6.0 / 30.0;  // the interval, to an ulp
   EXPECT_TRUE(policy.isKeyframe(last, frame));
@@ -109,6 +111,26 @@ TEST(KeyframePolicy, MotionSharedTracksAndInterval) {
   EXPECT_TRUE(policy.isKeyframe(last, frame));
   for (Observation& o : frame.observations) o.pixel.x() -= 25.0;
   frame.observations.resize(6);  // 60 % of the tracks remain
+  EXPECT_TRUE(policy.isKeyframe(last, frame));
+}
+
+// A frame that would be a keyframe by its motion or its lost tracks waits
+// for the shortest interval; the frame after it (1/15 s at 30 Hz) is one.
+TEST(KeyframePolicy, KeyframesComeNoSoonerThanTheShortestInterval) {
+  FrameObservations last, frame;
+  last.time_s = 10.0;
+  for (int track = 0; track < 10; ++track) {
+    last.observations.push_back({track, 0, Eigen::Vector2d(100.0 + track, 200.0)});
+    frame.observations.push_back({track, 0, Eigen::Vector2d(140.0 + track, 200.0)});  // 40 px each
+  }
+  const KeyframePolicy policy({.minInterval_s = 1.0 / 15.0});
+  frame.time_s = 10.0 + 1.0 / 30.0;
+  EXPECT_FALSE(policy.isKeyframe(last, frame));
+  frame.observations.resize(3);  // 30 % of the tracks remain
+  EXPECT_FALSE(policy.isKeyframe(last, frame));
+  frame.time_s = 10.0 + 2.0 / 30.0;  // the interval, to an ulp
+  EXPECT_TRUE(policy.isKeyframe(last, frame));
+  frame.time_s = 10.0 + 1.0 / 15.0;  // a 15 Hz camera's next frame
   EXPECT_TRUE(policy.isKeyframe(last, frame));
 }
 
@@ -124,6 +146,11 @@ TEST(OdometryOptions, RejectsInvalidSettings) {
   EXPECT_THROW(options.validate(), Error);
   options = {};
   options.extrinsicRateSigma = -1.0;
+  EXPECT_THROW(options.validate(), Error);
+  options = {};
+  options.keyframes.minInterval_s = options.keyframes.maxInterval_s + 0.1;
+  EXPECT_THROW(options.validate(), Error);
+  options.keyframes.minInterval_s = -0.1;
   EXPECT_THROW(options.validate(), Error);
   EXPECT_THROW(extrinsicModeFromName("loose"), Error);
   EXPECT_EQ(extrinsicModeFromName("rigid"), ExtrinsicMode::kRigid);
@@ -221,6 +248,11 @@ TEST(OdometryFlight, AnUncertainStartTakesMoreSamplesInsteadOfGivingFramesUp) {
   ASSERT_EQ(estimates.size(), sequence.frames.size());
   EXPECT_EQ(std::count_if(estimates.begin(), estimates.end(), [](const FrameEstimate& e) { return !e.tracked; }), 0);
   EXPECT_GT(estimates.front().windowFrames, samples);  // the start's samples, all in the window
+  // The first frame's note: "long-range start over N samples (scale std X %)".
+  const std::string& note = estimates.front().note;
+  const std::string prefix = "long-range start over ";
+  ASSERT_EQ(note.rfind(prefix, 0), 0u) << note;
+  EXPECT_GT(std::stoi(note.substr(prefix.size())), samples) << note;
   EXPECT_LE(estimates.front().windowFrames, odometry.windowSize);
   EXPECT_LT(finalErrorFraction(estimates, sequence), 0.05);
 

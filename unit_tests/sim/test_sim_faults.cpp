@@ -133,6 +133,7 @@ TEST(SimFaults, ShippedStressScenariosLoadAndFly) {
   const SimScenario low = loadScenario((folder / "low30_10hz.yaml").string());
   EXPECT_DOUBLE_EQ(low.flight.frameRate_hz, 10.0);
   EXPECT_DOUBLE_EQ(low.flight.altitude_m, 30.0);
+  EXPECT_DOUBLE_EQ(loadScenario((folder / "low30_30hz.yaml").string()).flight.frameRate_hz, 30.0);
   EXPECT_DOUBLE_EQ(loadScenario((folder / "high150_10hz.yaml").string()).flight.altitude_m, 150.0);
   const SimScenario vga = loadScenario((folder / "sensor_vga.yaml").string());
   EXPECT_EQ(vga.rig.cameras[0].width, 640);
