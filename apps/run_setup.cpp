@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 
 #include "lrsvo/frontend/datasets/source_factory.h"
 #include "lrsvo/graph/error.h"
@@ -54,17 +55,18 @@ void OdometrySettings::addOptions(CLI::App& command) {
       .add_option("--max-keyframe-rate", maxKeyframeRate_hz,
                   "Most keyframes a second (each costs a window adjustment); keyframes otherwise follow the image "
                   "motion. 0: no limit, every frame may be a keyframe")
-      ->check(CLI::Number)
       ->check(CLI::Validator(
           [](const std::string& text) {
             const KeyframePolicyOptions defaults;
-            const double rate_hz = std::stod(text);
+            char* end = nullptr;
+            const double rate_hz = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0') return std::string("must be a number of keyframes a second");
             return rate_hz == 0.0 || rate_hz * defaults.maxInterval_s >= 1.0 - 1e-9
                        ? std::string()
                        : "must be 0 or at least " + formatNumber(1.0 / defaults.maxInterval_s) +
                              " (a keyframe comes at least every " + formatNumber(defaults.maxInterval_s) + " s)";
           },
-          "0 or >= 3"))
+          ""))
       ->capture_default_str();
   command.add_option("--detector", detector, "Feature detector: gftt or fast (KLT tracking), orb (descriptors)")
       ->capture_default_str();
