@@ -4,7 +4,7 @@ same scenario with every seed it has (the scenario's, the flight's, the terrain'
 rig deformation's and the texture's) set to N, so one claim is checked over a batch of
 worlds rather than on one. Prints one Markdown row per flight, seed and build (ATE in %
 of the distance flown, KITTI drift, frames posed, segments), then per source and build
-the mean and median ATE and, against the first build, the seeds where it is better,
+the mean and median ATE and the mean KITTI drift and, against the first build, the seeds where it is better,
 equal or worse (equal: the same ATE to the printed digits).
 
 Give one `--lrsvo` per build to compare; the builds take turns on each seed. Options
@@ -80,17 +80,19 @@ def scenario_text(source):
 
 
 def run(lrsvo, scenario, extra, out):
+    """(ATE %, KITTI drift % or None, the table row's cells)."""
     m, failure, _ = run_lrsvo(lrsvo, f"sim:{scenario}", extra, out)
     if m is None:
-        return None, failure
+        return None, None, failure
     ate = ate_percent(m)
     if ate is None:
-        return None, f"{m['frames_tracked']}/{m['frames']} posed, no metrics"
-    drift = f"{m['drift_percent']:.3f} %" if "drift_percent" in m else "–"
-    return ate, f"{ate:.3f} % | {drift} | {m['frames_tracked']}/{m['frames']} | {m['segments']}"
+        return None, None, f"{m['frames_tracked']}/{m['frames']} posed, no metrics"
+    drift = m.get("drift_percent")
+    drift_cell = f"{drift:.3f} %" if drift is not None else "–"
+    return ate, drift, f"{ate:.3f} % | {drift_cell} | {m['frames_tracked']}/{m['frames']} | {m['segments']}"
 
 
-def summarise(flight, builds, ates):
+def summarise(flight, builds, ates, drifts):
     for index, lrsvo in enumerate(builds):
         values = [a for a in ates[index] if a is not None]
         if not values:
@@ -98,6 +100,9 @@ def summarise(flight, builds, ates):
             continue
         line = (f"{flight}, {index}: {lrsvo}: ATE mean {statistics.mean(values):.3f} %, "
                 f"median {statistics.median(values):.3f} % over {len(values)} seeds")
+        drift_values = [d for d in drifts[index] if d is not None]
+        if drift_values:
+            line += f", KITTI drift mean {statistics.mean(drift_values):.3f} %"
         if index > 0:
             pairs = [(round(a, 3), round(b, 3)) for a, b in zip(ates[0], ates[index]) if a is not None and b is not None]
             line += (f"; against 0: better on {sum(b < a for a, b in pairs)}, equal on {sum(b == a for a, b in pairs)}, "
@@ -123,18 +128,20 @@ def main():
     for source in args.source:
         flight, text = scenario_text(source)
         ates = [[] for _ in args.lrsvo]
+        drifts = [[] for _ in args.lrsvo]
         for seed in args.seeds:
             name = f"{flight}_s{seed}"
             scenario = out / f"{name}.yaml"
             scenario.write_text(reseeded(text, seed, name))
             for index, lrsvo in enumerate(args.lrsvo):
-                ate, row = run(lrsvo, scenario, args.extra, out / name / str(index))
+                ate, drift, row = run(lrsvo, scenario, args.extra, out / name / str(index))
                 ates[index].append(ate)
+                drifts[index].append(drift)
                 print(f"| {flight} | {seed} | {index}: {lrsvo} | {row} |", flush=True)
-        summaries.append((flight, ates))
+        summaries.append((flight, ates, drifts))
     print()
-    for flight, ates in summaries:
-        summarise(flight, args.lrsvo, ates)
+    for flight, ates, drifts in summaries:
+        summarise(flight, args.lrsvo, ates, drifts)
 
 
 if __name__ == "__main__":
