@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -113,34 +114,46 @@ TEST(InitializerLongRange, SameSeedSameResult) {
   EXPECT_EQ(first.extrinsics[0], second.extrinsics[0]);
 }
 
-// Over flat ground (no relief, trees or buildings) the pair's essential
-// matrix may settle on the planar twin, which flies along the ground's normal;
-// on this seed it does (found by trying seeds: 9, 10 and 11 of 1-12 do). Its
-// map ends more than half the distance flown from the truth. The homography's true motion
-// is the other hypothesis, and the secondary camera, which fits the true
-// motion only, picks it.
+// Over flat ground (no relief, trees or buildings) the pair's essential matrix may
+// settle on the planar twin, which flies along the ground's normal; its map then ends
+// more than half the distance flown from the truth. The homography's true motion is
+// the other hypothesis, and the secondary camera, which fits the true motion only,
+// picks it. Which RANSAC draws land on the twin depends on the simulated pixels'
+// last bits (the compiler's rounding): with one RANSAC run instead of the best of
+// five, about half of the seeds do on this flat world, so the first of 20 seeds that
+// does is the case (none would happen with odds of one in a million).
 TEST(InitializerLongRange, SecondaryCameraRejectsThePlanarTwin) {
-  FeatureSimulationOptions options = initializationFlightOptions(60.0, 10);
-  options.terrain.relief_m = 0.0;
-  options.terrain.treeDensity_per_km2 = 0.0;
-  options.terrain.buildingDensity_per_km2 = 0.0;
-  const SimulatedSequence sequence = simulateSequence(options);
+  FeatureSimulationOptions simulation = initializationFlightOptions(60.0, 10);
+  simulation.terrain.relief_m = 0.0;
+  simulation.terrain.treeDensity_per_km2 = 0.0;
+  simulation.terrain.buildingDensity_per_km2 = 0.0;
+  const SimulatedSequence sequence = simulateSequence(simulation);
   const double flown = distanceFlown(sequence, 10);
-
-  const std::vector<MonocularResult> maps = buildMonocularMaps(sequence.rig, sequence.frames);
-  ASSERT_EQ(maps.size(), 2u);
   const std::vector<Eigen::Isometry3d> truth = alignToFirstCamera(sequence.trueCameraFromWorld);
   const double toMetres = distanceFlown(sequence, 2);  // the maps' unit: frames 0 and 1 are 1 apart
   const auto endError = [&](const MonocularResult& map) {
     return (toMetres * map.map.cameraFromWorld[9].inverse().translation() - truth[9].inverse().translation()).norm();
   };
-  ASSERT_TRUE(maps[0].success && maps[1].success);
-  EXPECT_GT(endError(maps[0]), 0.5 * flown);  // the essential matrix's twin
-  EXPECT_LT(endError(maps[1]), 0.05 * flown);
 
-  const InitializationResult result = LongRangeInitializer({}).initialize(sequence.rig, sequence.frames);
+  LongRangeInitializerOptions options;
+  options.monocular.twoView.attempts = 1;
+  std::vector<MonocularResult> maps;
+  for (options.seed = 1; options.seed <= 20; ++options.seed) {
+    MonocularOptions monocular = options.monocular;
+    monocular.seed = options.seed;  // as the initialiser passes it on
+    maps = buildMonocularMaps(sequence.rig, sequence.frames, monocular);
+    ASSERT_TRUE(maps[0].success) << "seed " << options.seed << ": " << maps[0].failure;
+    if (endError(maps[0]) > 0.5 * flown) break;  // the essential matrix's twin
+  }
+  ASSERT_LE(options.seed, 20u) << "no RANSAC seed settled on the twin";
+  const bool trueMotionAmongTheOthers = std::any_of(maps.begin() + 1, maps.end(), [&](const MonocularResult& map) {
+    return map.success && endError(map) < 0.05 * flown;
+  });
+  EXPECT_TRUE(trueMotionAmongTheOthers) << "seed " << options.seed;
+
+  const InitializationResult result = LongRangeInitializer(options).initialize(sequence.rig, sequence.frames);
   ASSERT_TRUE(result.success) << result.failure;
-  EXPECT_LT(finalPositionError(result, sequence), 0.05 * flown);
+  EXPECT_LT(finalPositionError(result, sequence), 3.0 * result.kappaRelativeStd * flown) << "seed " << options.seed;
 }
 
 // A few observations that are no projection of their point (3 % replaced by
