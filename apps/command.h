@@ -21,6 +21,6 @@ struct Command {
 
 }  // namespace lrsvo::cli
 
-#define LRSVO_REGISTER_COMMAND(name, function)                                    \
-  static const ::lrsvo::Registrar<::lrsvo::cli::Command> lrsvo_command_registrar( \
+#define LRSVO_REGISTER_COMMAND(name, function)                                                                \
+  static const ::lrsvo::Registrar<::lrsvo::cli::Command> LRSVO_CONCAT(lrsvo_command_registrar_, __COUNTER__)( \
       name, [] { return std::make_unique<::lrsvo::cli::Command>(::lrsvo::cli::Command{function}); })

@@ -122,7 +122,7 @@ SolveResult solveOnce(const Contender& contender, const BalProblem& start, const
   return result;
 }
 
-void printResults(const std::vector<BenchRow>& rows) {
+void printBalResults(const std::vector<BenchRow>& rows) {
   bench::TextTable table({"problem", "solver", "threads", "iterations", "s/iteration", "total s", "cpu s", "solve MB",
                           "initial cost", "final cost", "stop", "time/Ceres", "time/fastest", "cost/Ceres"});
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -286,7 +286,7 @@ void runBenchBal(const BenchBalOptions& options) {
   }
 
   std::cout << '\n';
-  printResults(rows);
+  printBalResults(rows);
   printPhases(rows);
   printChecks(rows);
   if (!options.json.empty()) {

@@ -62,7 +62,7 @@ SolveResult solveCeres(const PoseGraphOptions& problem, const SolverOptions& sto
   return bench::solvePoseGraphWithCeres(graph, stopping);
 }
 
-void printResults(const std::vector<BenchRow>& rows) {
+void printGraphResults(const std::vector<BenchRow>& rows) {
   bench::TextTable table({"problem", "solver", "iterations", "total s", "cpu s", "initial cost", "final cost", "stop",
                           "time/Ceres", "cost/Ceres"});
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -133,7 +133,7 @@ void runBenchGraph(const BenchGraphOptions& options) {
     }
   }
   std::cout << '\n';
-  printResults(rows);
+  printGraphResults(rows);
   if (!options.json.empty()) {
     bench::writeJson(rows, options.json);
     std::cout << "wrote " << options.json << '\n';

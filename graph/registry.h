@@ -82,8 +82,8 @@ struct Registrar {
 #define LRSVO_CONCAT(a, b) LRSVO_CONCAT_INNER(a, b)
 
 // Registers `Type` (default-constructible, derived from `Base`) under `name`.
-#define LRSVO_REGISTER(Base, Type, name, description)                             \
-  static const ::lrsvo::Registrar<Base> LRSVO_CONCAT(lrsvo_registrar_, __LINE__)( \
+#define LRSVO_REGISTER(Base, Type, name, description)                                \
+  static const ::lrsvo::Registrar<Base> LRSVO_CONCAT(lrsvo_registrar_, __COUNTER__)( \
       name, [] { return std::unique_ptr<Base>(new Type()); }, description)
 
 // Registers a vertex or edge type for graph files under its kTypeTag.
