@@ -12,6 +12,7 @@
 #include <ceres/solver.h>
 #include <ceres/version.h>
 
+#include "apps/bench/ceres_solve.h"
 #include "lrsvo/graph/error.h"
 
 namespace lrsvo::bench {
@@ -46,18 +47,6 @@ class SnavelyResidual {
  private:
   Eigen::Vector2d observed_;
 };
-
-// Ceres' summary message says which tolerance stopped it; name it as ours does.
-std::string terminationName(const ceres::Solver::Summary& summary) {
-  const std::pair<const char*, const char*> names[] = {
-      {"Function tolerance", "function_tolerance"},   {"Gradient tolerance", "gradient_tolerance"},
-      {"Parameter tolerance", "parameter_tolerance"}, {"Maximum number of iterations", "max_iterations"},
-      {"Maximum solver time", "time_limit"},          {"Minimum trust region radius", "damping_limit"},
-  };
-  for (const auto& [prefix, name] : names)
-    if (summary.message.rfind(prefix, 0) == 0) return name;
-  return ceres::TerminationTypeToString(summary.termination_type) + std::string(": ") + summary.message;
-}
 
 ceres::Solver::Options solverOptions(const SolverOptions& stopping, ceres::LinearSolverType linearSolver) {
   ceres::Solver::Options options;
@@ -114,7 +103,7 @@ SolveResult solveBalWithCeres(BalProblem& problem, const SolverOptions& stopping
     throw Error("bench: Ceres failed: " + summary.message);
 
   SolveResult result;
-  result.termination = terminationName(summary);
+  result.termination = ceresTerminationName(summary);
   // Steps computed, as ours counts them. summary.iterations starts with the
   // start point and leaves out the last step when a function or parameter
   // tolerance stops the solve: Ceres computes and evaluates that step, then

@@ -8,10 +8,7 @@
 
 namespace lrsvo::bench {
 
-namespace {
-
-// Ceres' summary message says which tolerance stopped it; name it as ours does.
-std::string terminationName(const ceres::Solver::Summary& summary) {
+std::string ceresTerminationName(const ceres::Solver::Summary& summary) {
   const std::pair<const char*, const char*> names[] = {
       {"Function tolerance", "function_tolerance"},   {"Gradient tolerance", "gradient_tolerance"},
       {"Parameter tolerance", "parameter_tolerance"}, {"Maximum number of iterations", "max_iterations"},
@@ -21,8 +18,6 @@ std::string terminationName(const ceres::Solver::Summary& summary) {
     if (summary.message.rfind(prefix, 0) == 0) return name;
   return ceres::TerminationTypeToString(summary.termination_type) + std::string(": ") + summary.message;
 }
-
-}  // namespace
 
 ceres::Solver::Options ceresSolverOptions(const SolverOptions& stopping, ceres::LinearSolverType linearSolver) {
   ceres::Solver::Options options;
@@ -57,7 +52,7 @@ SolveResult solveWithCeres(const ceres::Solver::Options& options, ceres::Problem
     throw Error("bench: Ceres failed: " + summary.message);
 
   SolveResult result;
-  result.termination = terminationName(summary);
+  result.termination = ceresTerminationName(summary);
   // Steps computed, as ours counts them. summary.iterations starts with the
   // start point and leaves out the last step when a function or parameter
   // tolerance stops the solve: Ceres computes and evaluates that step, then
