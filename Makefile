@@ -46,8 +46,8 @@ demo: build
 
 # Any sanitizer report fails the test that triggers it; the variables also reach the
 # test discovery that runs during the build. The sanitized build uses clang, which compiles the
-# instrumented Eigen code in about half g++'s time, and the Release build above g++, so the two
-# passes also see both compilers' warnings. RelWithDebInfo here means -O1 with line tables: stack
+# instrumented Eigen code in about two thirds of g++'s time, and the Release build above g++, so the
+# two passes also see both compilers' warnings. RelWithDebInfo here means -O1 with line tables: stack
 # traces keep file and line, and the build fits the CI budget. The packaging test and the Python
 # package (an extension module would need the ASan runtime preloaded into the interpreter) are left
 # to `make test`. The libraries are static here (shared in `make test`), so the tests also show every
