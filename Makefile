@@ -16,12 +16,15 @@ JOBS ?= $(shell nproc)
 TEST_JOBS ?= 2
 
 # configure(<build dir>, <cmake options>): a build directory made for another source tree (a
-# copied or moved checkout) or with another generator cannot be reconfigured, so it is started
-# afresh. Configuring every time is cheap and keeps the options as stated here.
+# copied or moved checkout), with another generator or, where the options name one, with another
+# C++ compiler cannot be reconfigured (CMake would drop the other options to change the compiler),
+# so it is started afresh. Configuring every time is cheap and keeps the options as stated here.
+cxx_compiler = $(patsubst -DCMAKE_CXX_COMPILER=%,%,$(filter -DCMAKE_CXX_COMPILER=%,$(1)))
 define configure
 	@if [ -f $(1)/CMakeCache.txt ] && ! { grep -qxF 'CMAKE_HOME_DIRECTORY:INTERNAL=$(CURDIR)' $(1)/CMakeCache.txt \
-	  && grep -qxF 'CMAKE_GENERATOR:INTERNAL=Ninja' $(1)/CMakeCache.txt; }; then \
-	  echo "$(1)/ was configured for another source tree or generator: removing it"; rm -rf $(1); fi
+	  && grep -qxF 'CMAKE_GENERATOR:INTERNAL=Ninja' $(1)/CMakeCache.txt \
+	  && grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*$(call cxx_compiler,$(2))$$' $(1)/CMakeCache.txt; }; then \
+	  echo "$(1)/ was configured for another source tree, generator or compiler: removing it"; rm -rf $(1); fi
 	cmake -S . -B $(1) -G Ninja $(2)
 endef
 
@@ -70,10 +73,8 @@ SANITIZE_SKIP := lrsvo_demo|lrsvo_run_interrupted_cli|example_three_camera_vo|Od
 # and checks everything else.
 sanitize: export ASAN_OPTIONS := detect_leaks=1:intercept_tls_get_addr=0
 sanitize: export UBSAN_OPTIONS := print_stacktrace=1:halt_on_error=1
-sanitize: deps
+sanitize:
 	@bash scripts/install_deps.sh clang libclang-rt-14-dev libomp-14-dev
-	@if [ -f $(ASAN_DIR)/CMakeCache.txt ] && ! grep -q '^CMAKE_CXX_COMPILER:.*clang++$$' $(ASAN_DIR)/CMakeCache.txt; then \
-	  echo "$(ASAN_DIR)/ was configured for another compiler: removing it"; rm -rf $(ASAN_DIR); fi
 	$(call configure,$(ASAN_DIR),$(SANITIZE_OPTIONS))
 	cmake --build $(ASAN_DIR) -j $(JOBS)
 	cd $(ASAN_DIR) && $(CTEST) -E '^(consumer_find_package|$(SANITIZE_SKIP))$$'

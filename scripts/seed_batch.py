@@ -4,8 +4,8 @@ same scenario with every seed it has (the scenario's, the flight's, the terrain'
 rig deformation's and the texture's) set to N, so one claim is checked over a batch of
 worlds rather than on one. Prints one Markdown row per flight, seed and build (ATE in %
 of the distance flown, KITTI drift, frames posed, segments), then per source and build
-the mean and median ATE and the mean KITTI drift and, against the first build, the seeds where it is better,
-equal or worse (equal: the same ATE to the printed digits).
+the mean and median ATE and the mean KITTI drift and, against the first build, the seeds
+where it is better, equal or worse (equal: the same ATE to the printed digits).
 
 Give one `--lrsvo` per build to compare; the builds take turns on each seed. Options
 after `--` go to every run. Run from the repository's top:

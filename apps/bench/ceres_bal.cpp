@@ -1,6 +1,5 @@
 #include "apps/bench/ceres_bal.h"
 
-#include <cmath>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -48,30 +47,6 @@ class SnavelyResidual {
   Eigen::Vector2d observed_;
 };
 
-ceres::Solver::Options solverOptions(const SolverOptions& stopping, ceres::LinearSolverType linearSolver) {
-  ceres::Solver::Options options;
-  options.minimizer_type = ceres::TRUST_REGION;
-  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  options.linear_solver_type = linearSolver;
-  options.sparse_linear_algebra_library_type = ceres::SUITE_SPARSE;
-  options.dense_linear_algebra_library_type = ceres::EIGEN;  // Ceres' default
-  // ITERATIVE_SCHUR with the preconditioner ours uses (Ceres' default is JACOBI).
-  if (linearSolver == ceres::ITERATIVE_SCHUR) options.preconditioner_type = ceres::SCHUR_JACOBI;
-  options.use_inner_iterations = false;
-  options.jacobi_scaling = true;
-  // Ceres' LM damping is 1 / radius; both start at the same lambda.
-  options.initial_trust_region_radius = 1.0 / (stopping.lm.initialLambda > 0 ? stopping.lm.initialLambda : 1e-4);
-  options.function_tolerance = stopping.functionTolerance;
-  options.gradient_tolerance = stopping.gradientTolerance;
-  options.parameter_tolerance = stopping.parameterTolerance;
-  options.max_num_iterations = stopping.maxIterations;
-  if (std::isfinite(stopping.maxSeconds)) options.max_solver_time_in_seconds = stopping.maxSeconds;
-  options.num_threads = stopping.threads;
-  options.logging_type = ceres::SILENT;
-  options.minimizer_progress_to_stdout = false;
-  return options;
-}
-
 }  // namespace
 
 SolveResult solveBalWithCeres(BalProblem& problem, const SolverOptions& stopping,
@@ -81,7 +56,9 @@ SolveResult solveBalWithCeres(BalProblem& problem, const SolverOptions& stopping
     ceresProblem.AddResidualBlock(SnavelyResidual::create(observation.pixel), nullptr,
                                   problem.cameras[observation.camera].data(), problem.points[observation.point].data());
 
-  ceres::Solver::Options options = solverOptions(stopping, linearSolver);
+  ceres::Solver::Options options = ceresSolverOptions(stopping, linearSolver);
+  // ITERATIVE_SCHUR with the preconditioner ours uses (Ceres' default is JACOBI).
+  if (linearSolver == ceres::ITERATIVE_SCHUR) options.preconditioner_type = ceres::SCHUR_JACOBI;
   auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
   for (auto& point : problem.points)
     if (ceresProblem.HasParameterBlock(point.data())) ordering->AddElementToGroup(point.data(), 0);

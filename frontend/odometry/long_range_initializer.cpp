@@ -60,19 +60,23 @@ LongRangeInitializer::LongRangeInitializer(LongRangeInitializerOptions options) 
   validate(options_);
 }
 
+MonocularOptions LongRangeInitializer::monocularOptions() const {
+  const LongRangeInitializerOptions& o = options_;
+  MonocularOptions monocular = o.monocular;
+  monocular.frames = o.frames;
+  monocular.initialBaseline = o.initialBaseline;
+  monocular.solver.algorithm = o.solver.algorithm;
+  monocular.solver.linearSolver = o.solver.linearSolver;
+  monocular.bundle = o.bundle;
+  monocular.seed = o.seed;
+  return monocular;
+}
+
 InitializationResult LongRangeInitializer::initialize(const Rig& rig,
                                                       const std::vector<FrameObservations>& frames) const {
   rig.validate();
   if (rig.secondaryCount() < 1) throw Error("long-range initialiser: the rig needs a secondary camera");
-  const LongRangeInitializerOptions& o = options_;
-  MonocularOptions monocularOptions = o.monocular;
-  monocularOptions.frames = o.frames;
-  monocularOptions.initialBaseline = o.initialBaseline;
-  monocularOptions.solver.algorithm = o.solver.algorithm;
-  monocularOptions.solver.linearSolver = o.solver.linearSolver;
-  monocularOptions.bundle = o.bundle;
-  monocularOptions.seed = o.seed;
-  const std::vector<MonocularResult> maps = buildMonocularMaps(rig, frames, monocularOptions);
+  const std::vector<MonocularResult> maps = buildMonocularMaps(rig, frames, monocularOptions());
 
   // The secondary camera judges the pair's motion hypotheses: its calibrated
   // offset along the baseline fits the true motion only, so the planar twin

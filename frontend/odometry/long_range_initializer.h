@@ -88,6 +88,9 @@ class LongRangeInitializer {
  public:
   explicit LongRangeInitializer(LongRangeInitializerOptions options);
   const LongRangeInitializerOptions& options() const { return options_; }
+  // The options of step 1's monocular VO: `monocular` with its frames, initial baseline,
+  // solver, bundle and seed set from these options.
+  MonocularOptions monocularOptions() const;
 
   // Throws lrsvo::Error on an invalid rig or options; reports every other
   // failure in the result (no poses when the monocular stage fails, since its
