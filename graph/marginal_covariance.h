@@ -17,7 +17,8 @@ struct HeldCoordinate {
 // The joint covariance of free vertices' updates at the current estimates,
 // in the order given: the corresponding blocks of the inverse Gauss-Newton
 // information of the whole graph, marginalised vertices (points) eliminated
-// by the Schur complement.
+// by the Schur complement (SchurSolver, one solve per requested coordinate,
+// on up to `threads` threads; the result is the same for any count).
 // Held coordinates are conditioned on (treated as known): directions that
 // only a bound or a gauge determines would otherwise make the information
 // singular. The reduced system of the non-marginalised vertices is formed
@@ -25,6 +26,6 @@ struct HeldCoordinate {
 // when a vertex is fixed, marginalised or not on an edge, or when the
 // information is not positive definite.
 Eigen::MatrixXd marginalCovariance(Graph& graph, const std::vector<const Vertex*>& vertices,
-                                   const std::vector<HeldCoordinate>& held = {});
+                                   const std::vector<HeldCoordinate>& held = {}, int threads = 1);
 
 }  // namespace lrsvo

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <queue>
+#include <utility>
 
 #include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
@@ -40,26 +42,64 @@ std::size_t cellOf(const cv::Point2f& p, const cv::Size& size, const DetectorOpt
                                   x * options.gridColumns / size.width);
 }
 
+bool stronger(const cv::KeyPoint& a, const cv::KeyPoint& b) { return a.response > b.response; }
+
+// Visits the keypoints of every list strongest first, equal responses in the
+// order of the lists and then of their places in a list: the order of one
+// stable sort of the lists joined, but merged as it is read, so that bucketing
+// reads no further than it needs. visit returns what to read next: kNext, kSkipList
+// (nothing more of this keypoint's list) or kStop. Each list must be sorted by
+// `stronger` already.
+enum class Read { kNext, kSkipList, kStop };
+template <typename Visit>
+void strongestFirst(const std::vector<std::vector<cv::KeyPoint>>& lists, const Visit& visit) {
+  using Head = std::pair<std::size_t, std::size_t>;  // list, place in it
+  const auto after = [&](const Head& a, const Head& b) {
+    const float ra = lists[a.first][a.second].response, rb = lists[b.first][b.second].response;
+    return ra != rb ? ra < rb : a.first > b.first;
+  };
+  std::priority_queue<Head, std::vector<Head>, decltype(after)> heads(after);
+  for (std::size_t list = 0; list < lists.size(); ++list)
+    if (!lists[list].empty()) heads.push({list, 0});
+  while (!heads.empty()) {
+    const auto [list, place] = heads.top();
+    heads.pop();
+    const Read read = visit(lists[list][place], list);
+    if (read == Read::kStop) return;
+    if (read == Read::kNext && place + 1 < lists[list].size()) heads.push({list, place + 1});
+  }
+}
+
 // Up to `wanted` keypoints, strongest first, none where `free` is 0 (each kept
 // keypoint clears a disc of minDistance in `free`). A first pass fills each
 // cell up to `perCell` counting what it holds already (`counts`); a second
 // fills what textureless cells left over.
-std::vector<cv::KeyPoint> bucket(std::vector<cv::KeyPoint> keypoints, cv::Mat& free, const DetectorOptions& options,
-                                 std::vector<int> counts, int perCell, int wanted) {
-  std::stable_sort(keypoints.begin(), keypoints.end(),
-                   [](const cv::KeyPoint& a, const cv::KeyPoint& b) { return a.response > b.response; });
-  std::vector<cv::KeyPoint> kept;
-  for (int pass = 0; pass < 2; ++pass) {
-    for (const cv::KeyPoint& k : keypoints) {
-      if (static_cast<int>(kept.size()) >= wanted) return kept;
-      int& count = counts[cellOf(k.pt, free.size(), options)];
-      const int x = std::clamp(cvRound(k.pt.x), 0, free.cols - 1), y = std::clamp(cvRound(k.pt.y), 0, free.rows - 1);
-      if ((pass == 0 && count >= perCell) || free.at<unsigned char>(y, x) == 0) continue;
-      kept.push_back(k);
-      ++count;
-      cv::circle(free, k.pt, static_cast<int>(std::ceil(options.minDistance_px)), cv::Scalar(0), cv::FILLED);
-    }
+std::vector<cv::KeyPoint> bucket(std::vector<std::vector<cv::KeyPoint>> lists, cv::Mat& free,
+                                 const DetectorOptions& options, std::vector<int> counts, int perCell, int wanted) {
+  // The one cell all of a list's keypoints lie in, if any: once that cell is
+  // full, the first pass can pass over the rest of the list.
+  std::vector<std::size_t> listCell(lists.size(), counts.size());
+  for (std::size_t i = 0; i < lists.size(); ++i) {
+    std::vector<cv::KeyPoint>& list = lists[i];
+    if (!std::is_sorted(list.begin(), list.end(), stronger)) std::stable_sort(list.begin(), list.end(), stronger);
+    if (list.empty()) continue;
+    const std::size_t cell = cellOf(list.front().pt, free.size(), options);
+    if (std::all_of(list.begin(), list.end(),
+                    [&](const cv::KeyPoint& k) { return cellOf(k.pt, free.size(), options) == cell; }))
+      listCell[i] = cell;
   }
+  std::vector<cv::KeyPoint> kept;
+  for (int pass = 0; pass < 2 && static_cast<int>(kept.size()) < wanted; ++pass)
+    strongestFirst(lists, [&](const cv::KeyPoint& k, std::size_t list) {
+      const std::size_t cell = cellOf(k.pt, free.size(), options);
+      if (pass == 0 && counts[cell] >= perCell) return listCell[list] == cell ? Read::kSkipList : Read::kNext;
+      const int x = std::clamp(cvRound(k.pt.x), 0, free.cols - 1), y = std::clamp(cvRound(k.pt.y), 0, free.rows - 1);
+      if (free.at<unsigned char>(y, x) == 0) return Read::kNext;
+      kept.push_back(k);
+      ++counts[cell];
+      cv::circle(free, k.pt, static_cast<int>(std::ceil(options.minDistance_px)), cv::Scalar(0), cv::FILLED);
+      return static_cast<int>(kept.size()) < wanted ? Read::kNext : Read::kStop;
+    });
   return kept;
 }
 
@@ -91,9 +131,9 @@ DetectedFeatures FeatureDetector::detect(const cv::Mat& image, const std::vector
   const int perCell = (static_cast<int>(existing.size()) + wanted + cells - 1) / cells;
   std::vector<int> counts(static_cast<std::size_t>(cells), 0);
   for (const cv::Point2f& p : existing) ++counts[cellOf(p, image.size(), options_)];
-  std::vector<cv::KeyPoint> keypoints;
+  std::vector<std::vector<cv::KeyPoint>> candidates;  // one list per cell searched (ORB: one list)
   if (hasDescriptors()) {
-    detector_->detect(image, keypoints, mask);  // ORB needs the whole image for its pyramid and patches
+    detector_->detect(image, candidates.emplace_back(), mask);  // ORB needs the whole image for its pyramid and patches
   } else {
     // Only the cells short of their share are searched: topping up costs little.
     for (int row = 0; row < options_.gridRows; ++row)
@@ -102,15 +142,13 @@ DetectedFeatures FeatureDetector::detect(const cv::Mat& image, const std::vector
         const cv::Point corner(column * image.cols / options_.gridColumns, row * image.rows / options_.gridRows);
         const cv::Rect cell(corner, cv::Point((column + 1) * image.cols / options_.gridColumns,
                                               (row + 1) * image.rows / options_.gridRows));
-        std::vector<cv::KeyPoint> found;
+        std::vector<cv::KeyPoint>& found = candidates.emplace_back();
         detector_->detect(image(cell), found, mask(cell));
-        for (cv::KeyPoint& k : found) {
-          k.pt += cv::Point2f(static_cast<float>(corner.x), static_cast<float>(corner.y));
-          keypoints.push_back(k);
-        }
+        for (cv::KeyPoint& k : found) k.pt += cv::Point2f(static_cast<float>(corner.x), static_cast<float>(corner.y));
       }
   }
-  keypoints = bucket(std::move(keypoints), mask, options_, std::move(counts), perCell, wanted);
+  std::vector<cv::KeyPoint> keypoints =
+      bucket(std::move(candidates), mask, options_, std::move(counts), perCell, wanted);
   if (hasDescriptors()) {
     for (cv::KeyPoint& k : keypoints) k.angle = 0.0f;          // upright
     detector_->compute(image, keypoints, result.descriptors);  // drops keypoints too near the border

@@ -41,10 +41,10 @@ void validate(const LongRangeInitializerOptions& o) {
 // map's unit and kappa trade off exactly, so kappa alone would carry the
 // distance prior's own spread, which the product cancels. Conditioned on the
 // extrinsic centres and on angles at a bound (see the class comment).
-double scaleRelativeStd(BundleGraph& bundle, const Bounds& bounds, int lastPose) {
+double scaleRelativeStd(BundleGraph& bundle, const Bounds& bounds, int lastPose, int threads) {
   const std::vector<HeldCoordinate> held = bundle.scaleGaugeCoordinates(&bounds);
   const VertexPose& last = *bundle.pose(lastPose);
-  const Eigen::MatrixXd covariance = marginalCovariance(bundle.graph(), {bundle.scale(), &last}, held);
+  const Eigen::MatrixXd covariance = marginalCovariance(bundle.graph(), {bundle.scale(), &last}, held, threads);
   // d(kappa L) / (kappa L) = dkappa / kappa + dL / L; pose 0 is fixed and the
   // last centre moves by -R^T dt under VertexPose's update.
   const Eigen::Vector3d span = last.centre() - bundle.pose(0)->centre();
@@ -173,7 +173,7 @@ InitializationResult LongRangeInitializer::addSecondaryCameras(const Rig& rig,
   }
   if (o.estimateScale) {
     try {
-      result.kappaRelativeStd = scaleRelativeStd(bundle, bounds, o.frames - 1);
+      result.kappaRelativeStd = scaleRelativeStd(bundle, bounds, o.frames - 1, o.solver.threads);
     } catch (const Error&) {
       result.kappaRelativeStd = std::numeric_limits<double>::infinity();
     }

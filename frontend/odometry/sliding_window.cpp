@@ -30,11 +30,12 @@ std::unordered_map<int, int> baseViewCounts(const std::deque<Keyframe>& keyframe
 // marginal counts every observation in it, but each keyframe stays in the
 // window for windowSize adjustments: only 1 / windowSize of the information
 // it adds over the prior is new.
-double carriedScaleVariance(BundleGraph& bundle, const Bounds* enforced, double priorVariance, int windowSize) {
+double carriedScaleVariance(BundleGraph& bundle, const Bounds* enforced, double priorVariance, int windowSize,
+                            int threads) {
   const VertexScale* scale = bundle.heldViewScale();
   double windowVariance = priorVariance;
   try {
-    windowVariance = marginalCovariance(bundle.graph(), {scale}, bundle.scaleGaugeCoordinates(enforced))(0, 0);
+    windowVariance = marginalCovariance(bundle.graph(), {scale}, bundle.scaleGaugeCoordinates(enforced), threads)(0, 0);
   } catch (const Error&) {
     return priorVariance;  // s held, or its information singular: nothing learnt
   }
@@ -161,8 +162,8 @@ void SlidingWindow::writeBack(BundleGraph& bundle, const Bounds& bounds, const W
   for (int k = 1; drifting() && k <= rig_.secondaryCount(); ++k) rates_[k - 1] = bundle.extrinsicRate(k)->estimate();
   if (anchors_.empty()) return;
   const bool bounded = options_.extrinsicMode == ExtrinsicMode::kBounded;
-  scaleVariance_ =
-      carriedScaleVariance(bundle, bounded ? &bounds : nullptr, frame.scalePriorVariance, options_.windowSize);
+  scaleVariance_ = carriedScaleVariance(bundle, bounded ? &bounds : nullptr, frame.scalePriorVariance,
+                                        options_.windowSize, options_.solver.threads);
   const double heldScale = bundle.heldViewScale()->kappa();
   for (Keyframe& anchor : anchors_) {
     const Eigen::Vector3d centre =

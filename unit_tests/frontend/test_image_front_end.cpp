@@ -8,6 +8,7 @@
 #include <set>
 
 #include <gtest/gtest.h>
+#include <opencv2/features2d.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -283,6 +284,74 @@ TEST(FeatureTracker, DetectionIsSpreadAndKeepsAwayFromExistingTracks) {
   }
   options.name = "surf";
   EXPECT_THROW(FeatureDetector{options}, Error);
+}
+
+// The detector's documented choice, done the plain way: every searched
+// cell's candidates joined and sorted once, strongest first, then the two
+// bucketing passes. The detector merges the cells' lists as it reads them
+// instead; it must choose the same features in the same order.
+std::vector<cv::Point2f> plainBucketing(const cv::Mat& image, const std::vector<cv::Point2f>& existing, int wanted,
+                                        const DetectorOptions& options, const cv::Ptr<cv::Feature2D>& detector) {
+  const int columns = options.gridColumns, rows = options.gridRows;
+  const auto cellOf = [&](const cv::Point2f& p) {
+    const int x = std::clamp(static_cast<int>(p.x), 0, image.cols - 1);
+    const int y = std::clamp(static_cast<int>(p.y), 0, image.rows - 1);
+    return (y * rows / image.rows) * columns + x * columns / image.cols;
+  };
+  const int border = options.border_px, radius = static_cast<int>(std::ceil(options.minDistance_px));
+  cv::Mat free(image.size(), CV_8UC1, cv::Scalar(0));
+  free(cv::Rect(border, border, image.cols - 2 * border, image.rows - 2 * border)).setTo(255);
+  for (const cv::Point2f& p : existing) cv::circle(free, p, radius, cv::Scalar(0), cv::FILLED);
+  const int perCell = (static_cast<int>(existing.size()) + wanted + columns * rows - 1) / (columns * rows);
+  std::vector<int> counts(static_cast<std::size_t>(columns * rows), 0);
+  for (const cv::Point2f& p : existing) ++counts[static_cast<std::size_t>(cellOf(p))];
+  std::vector<cv::KeyPoint> candidates;
+  for (int row = 0; row < rows; ++row)
+    for (int column = 0; column < columns; ++column) {
+      if (counts[static_cast<std::size_t>(row * columns + column)] >= perCell) continue;
+      const cv::Point corner(column * image.cols / columns, row * image.rows / rows);
+      const cv::Rect cell(corner, cv::Point((column + 1) * image.cols / columns, (row + 1) * image.rows / rows));
+      std::vector<cv::KeyPoint> found;
+      detector->detect(image(cell), found, free(cell));
+      for (cv::KeyPoint k : found) {
+        k.pt += cv::Point2f(static_cast<float>(corner.x), static_cast<float>(corner.y));
+        candidates.push_back(k);
+      }
+    }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const cv::KeyPoint& a, const cv::KeyPoint& b) { return a.response > b.response; });
+  std::vector<cv::Point2f> kept;
+  for (int pass = 0; pass < 2; ++pass)
+    for (const cv::KeyPoint& k : candidates) {
+      if (static_cast<int>(kept.size()) == wanted) return kept;
+      int& count = counts[static_cast<std::size_t>(cellOf(k.pt))];
+      const int x = std::clamp(cvRound(k.pt.x), 0, image.cols - 1), y = std::clamp(cvRound(k.pt.y), 0, image.rows - 1);
+      if ((pass == 0 && count >= perCell) || free.at<unsigned char>(y, x) == 0) continue;
+      kept.push_back(k.pt);
+      ++count;
+      cv::circle(free, k.pt, radius, cv::Scalar(0), cv::FILLED);
+    }
+  return kept;
+}
+
+TEST(FeatureTracker, DetectionChoosesAsOneSortOfEveryCandidate) {
+  const cv::Mat image = WaveTexture(320, 240, 7).view(0, 0);
+  DetectorOptions options;
+  options.gridColumns = 4;
+  options.gridRows = 3;
+  // Existing tracks crowded on the left: those cells are full, the others short.
+  std::vector<cv::Point2f> existing;
+  for (int i = 0; i < 24; ++i) existing.emplace_back(20.0f + 13.0f * static_cast<float>(i % 4), 15.0f + 9.0f * i);
+  const std::map<std::string, cv::Ptr<cv::Feature2D>> detectors = {
+      {"gftt", cv::GFTTDetector::create(5000, options.gfttQuality, 0.0, 3, false)},
+      {"fast", cv::FastFeatureDetector::create(options.fastThreshold, true)}};
+  for (const auto& [name, detector] : detectors)
+    for (int wanted : {5, 30, 80, 400}) {
+      options.name = name;
+      const std::vector<cv::Point2f> expected = plainBucketing(image, existing, wanted, options, detector);
+      ASSERT_FALSE(expected.empty()) << name;
+      EXPECT_EQ(FeatureDetector(options).detect(image, existing, wanted).points, expected) << name << " " << wanted;
+    }
 }
 
 // A base image and a secondary image of a fronto-parallel textured plane:

@@ -90,6 +90,27 @@ TEST(InitializerGauge, MarginalCovarianceEqualsTheDenseInverse) {
   }
 }
 
+// Each column is one Schur solve, split over rows of the reduced system: the
+// split must not change a digit.
+TEST(InitializerGauge, MarginalCovarianceIsTheSameOnAnyThreadCount) {
+  WindowProblemOptions options;
+  options.frames = 5;
+  options.points = 60;
+  options.minTrackLength = 2;
+  options.maxTrackLength = 5;
+  options.withScale = true;
+  WindowProblem problem = makeWindowProblem(options);
+  const std::vector<HeldCoordinate> held = {{problem.extrinsic, 0}, {problem.extrinsic, 1}, {problem.extrinsic, 2}};
+  const std::vector<const Vertex*> targets = {problem.poses[2], problem.scale, problem.poses[4]};
+  const Eigen::MatrixXd one = marginalCovariance(problem.graph, targets, held, 1);
+  ASSERT_EQ(one.rows(), 13);
+  for (int threads : {2, 3}) {
+    const Eigen::MatrixXd many = marginalCovariance(problem.graph, targets, held, threads);
+    EXPECT_TRUE(many == one) << threads << " threads";
+  }
+  EXPECT_THROW(marginalCovariance(problem.graph, targets, held, 0), Error);
+}
+
 TEST(InitializerGauge, MarginalCovarianceRefusesAFixedVertex) {
   WindowProblemOptions options;
   options.frames = 3;
