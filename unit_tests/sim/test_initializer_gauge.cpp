@@ -46,14 +46,20 @@ TEST(InitializerGauge, CentreDistanceMatchesHandComputedDistanceAndNumericJacobi
   }
 }
 
+// A small window: `frames` poses, `points` points, each seen by 2 to all of the frames.
+WindowProblemOptions smallWindow(int frames, int points) {
+  WindowProblemOptions options;
+  options.frames = frames;
+  options.points = points;
+  options.minTrackLength = 2;
+  options.maxTrackLength = frames;
+  return options;
+}
+
 // The covariance from the Schur-reduced information equals the block of the
 // inverse of the whole (dense) information, with held coordinates removed.
 TEST(InitializerGauge, MarginalCovarianceEqualsTheDenseInverse) {
-  WindowProblemOptions options;
-  options.frames = 4;
-  options.points = 40;
-  options.minTrackLength = 2;
-  options.maxTrackLength = 4;
+  WindowProblemOptions options = smallWindow(4, 40);
   options.withScale = true;
   options.startScale = 0.8;
   WindowProblem problem = makeWindowProblem(options);
@@ -93,11 +99,7 @@ TEST(InitializerGauge, MarginalCovarianceEqualsTheDenseInverse) {
 // Each column is one Schur solve, split over rows of the reduced system: the
 // split must not change a digit.
 TEST(InitializerGauge, MarginalCovarianceIsTheSameOnAnyThreadCount) {
-  WindowProblemOptions options;
-  options.frames = 5;
-  options.points = 60;
-  options.minTrackLength = 2;
-  options.maxTrackLength = 5;
+  WindowProblemOptions options = smallWindow(5, 60);
   options.withScale = true;
   WindowProblem problem = makeWindowProblem(options);
   const std::vector<HeldCoordinate> held = {{problem.extrinsic, 0}, {problem.extrinsic, 1}, {problem.extrinsic, 2}};
@@ -112,12 +114,7 @@ TEST(InitializerGauge, MarginalCovarianceIsTheSameOnAnyThreadCount) {
 }
 
 TEST(InitializerGauge, MarginalCovarianceRefusesAFixedVertex) {
-  WindowProblemOptions options;
-  options.frames = 3;
-  options.points = 20;
-  options.minTrackLength = 2;
-  options.maxTrackLength = 3;
-  WindowProblem problem = makeWindowProblem(options);
+  WindowProblem problem = makeWindowProblem(smallWindow(3, 20));
   EXPECT_THROW(marginalCovariance(problem.graph, {problem.poses[0]}), Error);
 }
 
