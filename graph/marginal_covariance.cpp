@@ -10,46 +10,71 @@
 #include "lrsvo/graph/schur_solver.h"
 
 namespace lrsvo {
+namespace {
+
+// The graph's information H at the current estimates, held coordinates
+// conditioned on, and where the requested vertices' coordinates lie in it.
+class Information {
+ public:
+  Information(Graph& graph, const std::vector<const Vertex*>& vertices, const std::vector<HeldCoordinate>& held,
+              int threads)
+      : system_(graph, true), solver_(std::make_unique<DenseBackend>()), threads_(threads) {
+    if (threads < 1) throw Error("covariance: threads must be at least 1, got " + std::to_string(threads));
+    for (const Vertex* vertex : vertices) {
+      const int block = system_.blockOf(vertex);
+      if (block < 0 || block >= system_.freeCount())
+        throw Error("covariance: vertex " + std::to_string(vertex->id()) +
+                    " is fixed, marginalised or on no edge; expected a free vertex");
+      for (int d = 0; d < system_.dim(block); ++d) coordinates_.push_back(system_.offset(block) + d);
+    }
+    system_.fill(threads);
+    for (const HeldCoordinate& h : held) {
+      const int block = system_.blockOf(h.vertex);
+      if (block >= 0) system_.holdCoordinate(block, h.coordinate);
+    }
+    solver_.analyze(system_);
+  }
+
+  int size() const { return static_cast<int>(coordinates_.size()); }
+
+  // H^-1 r at the requested coordinates, for r zero but at them (`r`, in their
+  // order). On the free blocks H x = r is M x = r, M = U - W V^-1 W^T: one
+  // Schur solve.
+  Eigen::VectorXd solve(const Eigen::VectorXd& r) {
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(system_.scalarCount()), x;
+    for (int i = 0; i < size(); ++i) rhs[coordinates_[i]] = r[i];
+    if (!solver_.solve(system_, rhs, x, threads_))
+      throw Error("covariance: the information of the free vertices is singular (an unfixed gauge?)");
+    Eigen::VectorXd atCoordinates(size());
+    for (int i = 0; i < size(); ++i) atCoordinates[i] = x[coordinates_[i]];
+    return atCoordinates;
+  }
+
+ private:
+  BlockSystem system_;
+  SchurSolver solver_;
+  int threads_;
+  std::vector<int> coordinates_;  // scalar indices in H
+};
+
+}  // namespace
 
 Eigen::MatrixXd marginalCovariance(Graph& graph, const std::vector<const Vertex*>& vertices,
                                    const std::vector<HeldCoordinate>& held, int threads) {
-  if (threads < 1) throw Error("covariance: threads must be at least 1, got " + std::to_string(threads));
-  BlockSystem system(graph, true);
-  std::vector<int> targets;
-  int size = 0;
-  for (const Vertex* vertex : vertices) {
-    const int block = system.blockOf(vertex);
-    if (block < 0 || block >= system.freeCount())
-      throw Error("covariance: vertex " + std::to_string(vertex->id()) +
-                  " is fixed, marginalised or on no edge; expected a free vertex");
-    targets.push_back(block);
-    size += system.dim(block);
-  }
-  system.fill(threads);
-  for (const HeldCoordinate& h : held) {
-    const int block = system.blockOf(h.vertex);
-    if (block >= 0) system.holdCoordinate(block, h.coordinate);
-  }
-
-  // Column c of H^-1 solves H x = e_c; on the free vertices it is column c of
-  // the inverse reduced information S^-1 (S = U - W V^-1 W^T), which the
-  // solver's Schur elimination forms.
-  SchurSolver solver(std::make_unique<DenseBackend>());
-  solver.analyze(system);
-  Eigen::MatrixXd covariance(size, size);
-  Eigen::VectorXd unit = Eigen::VectorXd::Zero(system.scalarCount()), column;
-  for (int t = 0, c = 0; t < static_cast<int>(targets.size()); ++t)
-    for (int d = 0; d < system.dim(targets[t]); ++d, ++c) {
-      const int coordinate = system.offset(targets[t]) + d;
-      unit[coordinate] = 1.0;
-      if (!solver.solve(system, unit, column, threads))
-        throw Error("covariance: the information of the free vertices is singular (an unfixed gauge?)");
-      unit[coordinate] = 0.0;
-      for (int s = 0, r = 0; s < static_cast<int>(targets.size()); r += system.dim(targets[s++]))
-        covariance.block(r, c, system.dim(targets[s]), 1) =
-            column.segment(system.offset(targets[s]), system.dim(targets[s]));
-    }
+  Information information(graph, vertices, held, threads);
+  const int n = information.size();
+  Eigen::MatrixXd covariance(n, n);
+  for (int c = 0; c < n; ++c) covariance.col(c) = information.solve(Eigen::VectorXd::Unit(n, c));
   return covariance;
+}
+
+double marginalVariance(Graph& graph, const std::vector<const Vertex*>& vertices, const Eigen::VectorXd& coefficients,
+                        const std::vector<HeldCoordinate>& held, int threads) {
+  Information information(graph, vertices, held, threads);
+  if (coefficients.size() != information.size())
+    throw Error("covariance: " + std::to_string(coefficients.size()) + " coefficients for " +
+                std::to_string(information.size()) + " coordinates");
+  return coefficients.dot(information.solve(coefficients));
 }
 
 }  // namespace lrsvo

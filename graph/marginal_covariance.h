@@ -28,4 +28,11 @@ struct HeldCoordinate {
 Eigen::MatrixXd marginalCovariance(Graph& graph, const std::vector<const Vertex*>& vertices,
                                    const std::vector<HeldCoordinate>& held = {}, int threads = 1);
 
+// The variance c^T Sigma c of one linear combination of the same updates,
+// c holding a coefficient per coordinate of the vertices in the order given
+// (Sigma: marginalCovariance's result), by a single Schur solve. Throws as
+// marginalCovariance does, and when c has another length.
+double marginalVariance(Graph& graph, const std::vector<const Vertex*>& vertices, const Eigen::VectorXd& coefficients,
+                        const std::vector<HeldCoordinate>& held = {}, int threads = 1);
+
 }  // namespace lrsvo

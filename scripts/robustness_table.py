@@ -2,8 +2,9 @@
 """Runs `lrsvo run` on each stress condition and prints one Markdown table row per
 condition and build: ATE in % of the distance flown, path length over the true one,
 frames posed (measured; predicted ones in brackets), segments, frames whose tracks the
-whole image's shift predicted, frames posed against a lost segment's map, and the
-odometry's fps.
+whole image's shift predicted, frames posed against a lost segment's map, the
+odometry's fps, and the mean time per frame of detection and of the window adjustment
+(`metrics.json`'s `ms_per_frame`): where a change's time goes, stage by stage.
 
 Give one `--lrsvo` per build to compare; the builds take turns on each condition, so
 a drift in the machine's speed falls on both alike. `--variants` adds, for the last
@@ -61,7 +62,10 @@ def run(lrsvo, source, extra, out):
     ratio = 1.0 + m["path_length_error_percent"] / 100.0 if "path_length_error_percent" in m else float("nan")
     realigned = m.get("frames_realigned", "-")
     relocalised = m.get("frames_relocalised", "-")
-    return f"{ate:.3f} | {ratio:.4f} | {posed} | {m['segments']} | {realigned} | {relocalised} | {m['fps']:.1f}", wall
+    ms = m.get("ms_per_frame", {})
+    stages = " | ".join(f"{ms[stage]:.2f}" if stage in ms else "-" for stage in ("detect", "window_adjustment"))
+    return (f"{ate:.3f} | {ratio:.4f} | {posed} | {m['segments']} | {realigned} | {relocalised} | {m['fps']:.1f} | "
+            f"{stages}"), wall
 
 
 def main():
@@ -75,8 +79,8 @@ def main():
     only = set(filter(None, args.only.split(",")))
     out = pathlib.Path(args.out)
     print("| condition | build | ATE (% of distance) | path ratio | frames posed (+predicted) | segments | realigned "
-          "| relocalised | fps |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "| relocalised | fps | detection ms | window ms |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for key, name, source, extra in CONDITIONS:
         if only and key not in only:
             continue

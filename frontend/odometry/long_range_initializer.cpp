@@ -44,14 +44,13 @@ void validate(const LongRangeInitializerOptions& o) {
 double scaleRelativeStd(BundleGraph& bundle, const Bounds& bounds, int lastPose, int threads) {
   const std::vector<HeldCoordinate> held = bundle.scaleGaugeCoordinates(&bounds);
   const VertexPose& last = *bundle.pose(lastPose);
-  const Eigen::MatrixXd covariance = marginalCovariance(bundle.graph(), {bundle.scale(), &last}, held, threads);
   // d(kappa L) / (kappa L) = dkappa / kappa + dL / L; pose 0 is fixed and the
   // last centre moves by -R^T dt under VertexPose's update.
   const Eigen::Vector3d span = last.centre() - bundle.pose(0)->centre();
-  Eigen::Matrix<double, 1, 7> jacobian = Eigen::Matrix<double, 1, 7>::Zero();
+  Eigen::VectorXd jacobian = Eigen::VectorXd::Zero(7);
   jacobian[0] = 1.0 / bundle.scale()->kappa();
-  jacobian.segment<3>(1) = -span.transpose() * last.rotation().transpose() / span.squaredNorm();
-  return std::sqrt((jacobian * covariance * jacobian.transpose())(0, 0));
+  jacobian.segment<3>(1) = -last.rotation() * span / span.squaredNorm();
+  return std::sqrt(marginalVariance(bundle.graph(), {bundle.scale(), &last}, jacobian, held, threads));
 }
 
 }  // namespace

@@ -97,7 +97,7 @@ TEST(InitializerGauge, MarginalCovarianceEqualsTheDenseInverse) {
 }
 
 // Each column is one Schur solve, split over rows of the reduced system: the
-// split must not change a digit.
+// split must not change a digit. A combination's variance is one such solve.
 TEST(InitializerGauge, MarginalCovarianceIsTheSameOnAnyThreadCount) {
   WindowProblemOptions options = smallWindow(5, 60);
   options.withScale = true;
@@ -111,6 +111,13 @@ TEST(InitializerGauge, MarginalCovarianceIsTheSameOnAnyThreadCount) {
     EXPECT_TRUE(many == one) << threads << " threads";
   }
   EXPECT_THROW(marginalCovariance(problem.graph, targets, held, 0), Error);
+
+  // One combination's variance by one solve is that of the covariance: c^T Sigma c
+  // (to the same relative tolerance as the dense inverse above).
+  const Eigen::VectorXd c = Eigen::VectorXd::LinSpaced(13, -1.0, 2.0);
+  const double variance = marginalVariance(problem.graph, targets, c, held, 2);
+  EXPECT_NEAR(variance, c.dot(one * c), 1e-6 * variance);
+  EXPECT_THROW(marginalVariance(problem.graph, targets, Eigen::VectorXd::Ones(12), held), Error);
 }
 
 TEST(InitializerGauge, MarginalCovarianceRefusesAFixedVertex) {
