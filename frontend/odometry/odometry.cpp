@@ -60,13 +60,17 @@ std::vector<FrameEstimate> Odometry::settled(std::vector<FrameEstimate> estimate
 
 std::vector<FrameEstimate> Odometry::estimate(const FrameObservations& frame, const SecondaryObservations& secondary) {
   const int index = nextFrame_++;
+  // Why the map could not pose this frame, for its note.
+  std::string unposed;
   if (tracking_) {
     FrameEstimate estimate = track(frame, index, secondary);
     if (estimate.tracked) return {estimate};
     // Lost: this frame starts the next initialisation.
+    unposed = "tracking lost: " + poseShortfall(estimate);
   } else if (canRelocalise(frame.time_s)) {
     FrameEstimate estimate = track(frame, index, secondary);
     if (estimate.tracked) return relocalised(std::move(estimate));
+    if (estimate.mappedMatches > 0) unposed = "not posed against the lost map: " + poseShortfall(estimate);
   }
   // The initialiser's samples: the first buffered frame, then each frame at
   // least initializationInterval_s after the last sample (a failed attempt
@@ -74,7 +78,11 @@ std::vector<FrameEstimate> Odometry::estimate(const FrameObservations& frame, co
   if (pending_.empty()) {
     FrameObservations whole = withSecondary(frame, secondary);
     const StereoStart start = lrsvo::startFromStereo(rig_, whole, options_.stereoStart);
-    if (start.usable) return {startFromStereo(whole, index, start)};
+    if (start.usable) {
+      FrameEstimate started = startFromStereo(whole, index, start);
+      started.note = joinedNotes(unposed, started.note);
+      return {started};
+    }
     samples_.push_back(0);
     pending_.push_back(std::move(whole));
   } else if (frame.time_s - pending_[samples_.back()].time_s >= options_.initializationInterval_s - kFrameTimeSlack_s) {
@@ -84,6 +92,7 @@ std::vector<FrameEstimate> Odometry::estimate(const FrameObservations& frame, co
     pending_.push_back(frame);
   }
   pendingIndices_.push_back(index);
+  pendingNotes_.push_back(std::move(unposed));
   if (static_cast<int>(samples_.size()) < samplesWanted_) return {};
   return initialize();
 }
@@ -92,13 +101,34 @@ std::vector<FrameEstimate> Odometry::finish() { return settled(givePendingUp());
 
 std::vector<FrameEstimate> Odometry::givePendingUp() {
   std::vector<FrameEstimate> estimates;
-  for (std::size_t i = 0; i < pending_.size(); ++i) estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
+  for (std::size_t i = 0; i < pending_.size(); ++i) estimates.push_back(untracked(i));
   if (!estimates.empty()) estimates.front().times.initialize_ms += std::exchange(initializeMsUnreported_, 0.0);
-  pending_.clear();
-  pendingIndices_.clear();
-  samples_.clear();
+  clearPending();
   samplesWanted_ = options_.initializer.frames;
   return estimates;
+}
+
+void Odometry::clearPending() {
+  pending_.clear();
+  pendingIndices_.clear();
+  pendingNotes_.clear();
+  samples_.clear();
+}
+
+FrameEstimate Odometry::untracked(std::size_t pendingPosition) const {
+  FrameEstimate estimate = untracked(pending_[pendingPosition], pendingIndices_[pendingPosition]);
+  estimate.note = pendingNotes_[pendingPosition];
+  return estimate;
+}
+
+std::string Odometry::poseShortfall(const FrameEstimate& estimate) const {
+  return std::to_string(estimate.poseInliers) + " pose inliers of " + std::to_string(estimate.mappedMatches) +
+         " mapped matches (" + std::to_string(options_.minPoseInliers) + " needed)";
+}
+
+std::string Odometry::joinedNotes(const std::string& first, const std::string& second) {
+  if (first.empty()) return second;
+  return second.empty() ? first : first + "; " + second;
 }
 
 bool Odometry::canRelocalise(double time_s) const {
@@ -160,11 +190,13 @@ std::vector<FrameEstimate> Odometry::initialize() {
     // with as many samples as this attempt had.
     const std::size_t givenUp = samples_[1];
     for (std::size_t i = 0; i < givenUp; ++i) {
-      estimates.push_back(untracked(pending_[i], pendingIndices_[i]));
-      estimates.back().note = "initialisation failed: " + result.failure;
+      estimates.push_back(untracked(i));
+      estimates.back().note = joinedNotes(estimates.back().note, "initialisation failed: " + result.failure);
     }
-    pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(givenUp));
-    pendingIndices_.erase(pendingIndices_.begin(), pendingIndices_.begin() + static_cast<std::ptrdiff_t>(givenUp));
+    const auto end = static_cast<std::ptrdiff_t>(givenUp);
+    pending_.erase(pending_.begin(), pending_.begin() + end);
+    pendingIndices_.erase(pendingIndices_.begin(), pendingIndices_.begin() + end);
+    pendingNotes_.erase(pendingNotes_.begin(), pendingNotes_.begin() + end);
     samples_.erase(samples_.begin());
     for (std::size_t& position : samples_) position -= givenUp;
     estimates.front().times.initialize_ms = std::exchange(initializeMsUnreported_, 0.0) + start.milliseconds();
@@ -189,7 +221,7 @@ std::vector<FrameEstimate> Odometry::initialize() {
   for (std::size_t i = 0, sample = 0; i < pending_.size(); ++i) {
     FrameEstimate estimate;
     if (sample < samples_.size() && samples_[sample] == i) {
-      estimate = untracked(pending_[i], pendingIndices_[i]);
+      estimate = untracked(i);
       estimate.tracked = true;
       estimate.keyframe = true;
       estimate.segment = segment_;
@@ -198,7 +230,7 @@ std::vector<FrameEstimate> Odometry::initialize() {
       estimate.windowRmsError_px = result.rmsReprojectionError_px;
       estimate.bundleIterations = result.summary.iterationCount();
     } else {
-      estimate = untracked(pending_[i], pendingIndices_[i]);
+      estimate = untracked(i);
       Eigen::Isometry3d pose;
       if (estimateFramePose(pending_[i], pendingIndices_[i], pose, estimate)) {
         estimate.tracked = true;
@@ -214,11 +246,10 @@ std::vector<FrameEstimate> Odometry::initialize() {
   char note[96];
   std::snprintf(note, sizeof note, "long-range start over %zu samples (scale std %.2g %%)", sampled.size(),
                 100.0 * result.kappaRelativeStd);
-  estimates[samples_.front()].note = note;
+  FrameEstimate& first = estimates[samples_.front()];
+  first.note = joinedNotes(first.note, note);
   estimates.back().times.initialize_ms = initialize_ms;
-  pending_.clear();
-  pendingIndices_.clear();
-  samples_.clear();
+  clearPending();
   return estimates;
 }
 

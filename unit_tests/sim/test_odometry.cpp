@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <string>
 
@@ -383,6 +384,32 @@ TEST(OdometryFlight, RelocalisesAfterALossOfSeconds) {
     EXPECT_NE(back.note.find("2.5"), std::string::npos) << back.note;  // the time since the last measured pose
     for (int i = 0; i < hole + gap; ++i) EXPECT_FALSE(estimates[i].relocalised) << "frame " << i;
   }
+}
+
+// The same loss with too few of the lost map's tracks found again (10, where
+// a pose needs 20 inliers): the frame after the hole is not posed against the
+// lost map, and its note, like the note of the frame where tracking was lost,
+// says how many pose inliers and mapped matches it had against the 20 needed.
+TEST(OdometryFlight, SaysWhyTheLostMapCouldNotPoseAFrame) {
+  const int hole = 70, gap = 75, kept = 10;
+  const SimulatedSequence sequence = withTracksFoundAgain(4, hole, gap, kept);
+  const std::vector<FrameEstimate> estimates = runOver(sequence.frames, sequence.rig, OdometryOptions{});
+  ASSERT_EQ(estimates.size(), sequence.frames.size());
+  const std::string lost = estimates[hole].note;
+  EXPECT_EQ(lost.rfind("tracking lost: 0 pose inliers of 0 mapped matches (20 needed)", 0), 0u) << lost;
+  const FrameEstimate& back = estimates[hole + gap];
+  EXPECT_FALSE(back.relocalised);
+  int inliers = -1, mapped = -1, needed = -1;
+  ASSERT_EQ(
+      std::sscanf(back.note.c_str(), "not posed against the lost map: %d pose inliers of %d mapped matches (%d needed)",
+                  &inliers, &mapped, &needed),
+      3)
+      << back.note;
+  EXPECT_GT(mapped, 0);
+  EXPECT_LE(mapped, kept);
+  EXPECT_LE(inliers, mapped);
+  EXPECT_EQ(needed, 20);
+  for (int i = 0; i < hole; ++i) EXPECT_TRUE(estimates[i].note.find("lost") == std::string::npos) << "frame " << i;
 }
 
 // Given each frame's base observations and its secondary ones on request (as the
