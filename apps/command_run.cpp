@@ -108,7 +108,9 @@ void addRunCommand(CLI::App& app) {
       "and plots: trajectory_top.png, position_error.png, orientation_error.png, extrinsics.png. fps is the "
       "odometry's own rate, without reading or rendering frames. Frames before the first initialisation, and after "
       "a tracking loss until the next, have no pose: the trajectory skips them and frames.csv marks them (status "
-      "initialising, or bad_frame with the reason in note). Ctrl-C or SIGTERM stops after the current frame and "
+      "initialising, or bad_frame with the reason in note). Above the progress line, a line of its own tells each "
+      "skipped frame, each segment's start (how it started and, after a loss, why tracking was lost) and each "
+      "relocalisation. Ctrl-C or SIGTERM stops after the current frame and "
       "writes every output for the frames done (exit status 130 or 143); a second Ctrl-C quits at once. Each "
       "frame's lines are written whole as it is estimated, so even a killed run leaves no broken line.");
   command->callback([options] { runCommand(*options); });

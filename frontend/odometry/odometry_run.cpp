@@ -62,6 +62,7 @@ OdometryPipeline::OdometryPipeline(const Rig& rig, const std::vector<LensDistort
     : rig_(rig),
       onBadFrame_(options.onBadFrame),
       progress_(options.progress),
+      firstFrame_(options.firstFrame),
       onFrame_(options.onFrame),
       odometry_(std::make_unique<Odometry>(rig, options.odometry)),
       frontEnd_(std::make_unique<ImageFrontEnd>(rig, distortion, options.frontEnd)) {
@@ -170,6 +171,14 @@ void OdometryPipeline::write(const FrameEstimate& estimate, const FrontEndTiming
     result_.trajectory.add(estimate.time_s, estimate.cameraFromWorld.inverse());
   if (writer_) writer_->write(estimate, timings);
   if (onFrame_) onFrame_(estimate);
+  if (progress_) announce(estimate);
+}
+
+void OdometryPipeline::announce(const FrameEstimate& estimate) {
+  const bool startsSegment = estimate.tracked && estimate.segment > lastAnnouncedSegment_;
+  if (!startsSegment && !estimate.relocalised) return;
+  lastAnnouncedSegment_ = std::max(lastAnnouncedSegment_, estimate.segment);
+  *progress_ << "\nframe " << firstFrame_ + estimate.frame << ": " << estimate.note << '\n' << std::flush;
 }
 
 int framesInRun(int sourceFrames, int firstFrame, int maxFrames) {
@@ -182,7 +191,12 @@ int framesInRun(int sourceFrames, int firstFrame, int maxFrames) {
 std::vector<RunResult> runOdometry(FrameSource& source, const std::vector<RunOptions>& variants) {
   if (variants.empty()) throw Error("runOdometry: no variant to run");
   std::vector<std::unique_ptr<OdometryPipeline>> pipelines;
-  for (const RunOptions& options : variants) pipelines.push_back(std::make_unique<OdometryPipeline>(source, options));
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    // The variants see the same frames: the first one's progress stream speaks for all.
+    RunOptions options = variants[i];
+    if (i > 0) options.progress = nullptr;
+    pipelines.push_back(std::make_unique<OdometryPipeline>(source, options));
+  }
   const RunOptions& first = variants.front();
   const int frameCount = framesInRun(source.frameCount(), first.firstFrame, first.maxFrames);
   source.skip(first.firstFrame);

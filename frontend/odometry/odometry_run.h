@@ -28,10 +28,12 @@ BadFramePolicy badFramePolicyFromName(const std::string& name);
 struct RunOptions {
   OdometryOptions odometry;
   ImageFrontEndOptions frontEnd;
-  int firstFrame = 0;                // the source's frames before this one are skipped
-  int maxFrames = -1;                // < 0: every frame of the source (from firstFrame)
-  std::filesystem::path outDir;      // empty: write nothing
-  std::ostream* progress = nullptr;  // one updating line: frame, fps, ETA (of the first variant's options)
+  int firstFrame = 0;            // the source's frames before this one are skipped
+  int maxFrames = -1;            // < 0: every frame of the source (from firstFrame)
+  std::filesystem::path outDir;  // empty: write nothing
+  // One updating line: frame, fps, ETA (of the first variant's options); a
+  // line of its own for each bad frame, segment start and relocalisation.
+  std::ostream* progress = nullptr;
   // Set (e.g. by a signal handler) to end the run after the current frame, as
   // if the source had ended there: every output is still written whole.
   const std::atomic<bool>* stop = nullptr;
@@ -96,6 +98,10 @@ class OdometryPipeline {
   // Writes the bad frames at the head of pending_ (they wait for the frames before them).
   void recordBadFrames();
   void write(const FrameEstimate& estimate, const FrontEndTimings& timings);
+  // On the progress stream, a line of its own for each segment's first pose
+  // and each relocalisation, with the frame's note (how the segment started,
+  // why tracking was lost).
+  void announce(const FrameEstimate& estimate);
 
   // A frame on its way to the outputs, in frame order: the odometry's frames
   // wait here while it buffers them (with their front-end timings), a bad
@@ -108,6 +114,8 @@ class OdometryPipeline {
   Rig rig_;
   BadFramePolicy onBadFrame_;
   std::ostream* progress_;
+  int firstFrame_;  // the source's number of the odometry's frame 0
+  int lastAnnouncedSegment_ = -1;
   std::function<void(const FrameEstimate&)> onFrame_;
   std::unique_ptr<Odometry> odometry_;
   std::unique_ptr<ImageFrontEnd> frontEnd_;

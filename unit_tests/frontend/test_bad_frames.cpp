@@ -175,8 +175,16 @@ std::vector<std::string> framesCsvRow(const fs::path& out, int n) {
 
 class BadEurocFrame : public testing::TestWithParam<std::tuple<Breakage, const char*>> {};
 
+std::size_t occurrences(const std::string& text, const std::string& part) {
+  std::size_t count = 0;
+  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
+  return count;
+}
+
 // One broken image in the middle of the sequence: its frame gets no pose and
-// says why, every other frame is posed as on the whole sequence, in one segment.
+// says why, every other frame is posed as on the whole sequence, in one
+// segment. The progress stream gives the segment's start and the bad frame a
+// line each.
 TEST_P(BadEurocFrame, IsSkippedAndTheRunGoesOn) {
   const auto [breakage, camera] = GetParam();
   const int bad = 47;
@@ -186,7 +194,13 @@ TEST_P(BadEurocFrame, IsSkippedAndTheRunGoesOn) {
   RunOptions options;
   options.outDir = sequence / "out";
   options.frontEnd.stereo.minDepth_m = 0.5;
+  std::ostringstream progress;
+  options.progress = &progress;
   const RunResult run = runOdometry(source, options);
+  const std::string lines = progress.str();
+  EXPECT_EQ(occurrences(lines, "\nframe 0: stereo start at a median depth of "), 1u) << lines;
+  EXPECT_EQ(occurrences(lines, ": stereo start"), 1u) << lines;
+  EXPECT_EQ(occurrences(lines, "\nframe " + std::to_string(bad) + " skipped: "), 1u) << lines;
   EXPECT_EQ(run.totals.frames, source.frameCount());
   EXPECT_EQ(run.totals.badFrames, 1);
   EXPECT_EQ(run.segments.at(bad), -1);
