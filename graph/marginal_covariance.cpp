@@ -18,8 +18,7 @@ class Information {
  public:
   Information(Graph& graph, const std::vector<const Vertex*>& vertices, const std::vector<HeldCoordinate>& held,
               int threads)
-      : system_(graph, true), solver_(std::make_unique<DenseBackend>()), threads_(threads) {
-    if (threads < 1) throw Error("covariance: threads must be at least 1, got " + std::to_string(threads));
+      : threads_(checkedThreads(threads)), system_(graph, true), solver_(std::make_unique<DenseBackend>()) {
     for (const Vertex* vertex : vertices) {
       const int block = system_.blockOf(vertex);
       if (block < 0 || block >= system_.freeCount())
@@ -51,9 +50,15 @@ class Information {
   }
 
  private:
+  // Checked before the block system is built from the graph.
+  static int checkedThreads(int threads) {
+    if (threads < 1) throw Error("covariance: threads must be at least 1, got " + std::to_string(threads));
+    return threads;
+  }
+
+  int threads_;
   BlockSystem system_;
   SchurSolver solver_;
-  int threads_;
   std::vector<int> coordinates_;  // scalar indices in H
 };
 

@@ -84,15 +84,14 @@ std::vector<FrameEstimate> Odometry::estimate(const FrameObservations& frame, co
       return {started};
     }
     samples_.push_back(0);
-    pending_.push_back(std::move(whole));
-  } else if (frame.time_s - pending_[samples_.back()].time_s >= options_.initializationInterval_s - kFrameTimeSlack_s) {
+    pending_.push_back({std::move(whole), index, std::move(unposed)});
+  } else if (frame.time_s - pending_[samples_.back()].observations.time_s >=
+             options_.initializationInterval_s - kFrameTimeSlack_s) {
     samples_.push_back(pending_.size());
-    pending_.push_back(withSecondary(frame, secondary));
+    pending_.push_back({withSecondary(frame, secondary), index, std::move(unposed)});
   } else {
-    pending_.push_back(frame);
+    pending_.push_back({frame, index, std::move(unposed)});
   }
-  pendingIndices_.push_back(index);
-  pendingNotes_.push_back(std::move(unposed));
   if (static_cast<int>(samples_.size()) < samplesWanted_) return {};
   return initialize();
 }
@@ -101,7 +100,7 @@ std::vector<FrameEstimate> Odometry::finish() { return settled(givePendingUp());
 
 std::vector<FrameEstimate> Odometry::givePendingUp() {
   std::vector<FrameEstimate> estimates;
-  for (std::size_t i = 0; i < pending_.size(); ++i) estimates.push_back(untracked(i));
+  for (const PendingFrame& pending : pending_) estimates.push_back(untracked(pending));
   if (!estimates.empty()) estimates.front().times.initialize_ms += std::exchange(initializeMsUnreported_, 0.0);
   clearPending();
   samplesWanted_ = options_.initializer.frames;
@@ -110,14 +109,12 @@ std::vector<FrameEstimate> Odometry::givePendingUp() {
 
 void Odometry::clearPending() {
   pending_.clear();
-  pendingIndices_.clear();
-  pendingNotes_.clear();
   samples_.clear();
 }
 
-FrameEstimate Odometry::untracked(std::size_t pendingPosition) const {
-  FrameEstimate estimate = untracked(pending_[pendingPosition], pendingIndices_[pendingPosition]);
-  estimate.note = pendingNotes_[pendingPosition];
+FrameEstimate Odometry::untracked(const PendingFrame& pending) const {
+  FrameEstimate estimate = untracked(pending.observations, pending.index);
+  estimate.note = pending.note;
   return estimate;
 }
 
@@ -171,11 +168,11 @@ bool Odometry::moreSamplesCouldSettleTheScale(const InitializationResult& result
 std::vector<FrameEstimate> Odometry::initialize() {
   const Stopwatch start;
   std::vector<FrameObservations> sampled;
-  for (std::size_t position : samples_) sampled.push_back(pending_[position]);
+  for (std::size_t position : samples_) sampled.push_back(pending_[position].observations);
   LongRangeInitializerOptions initializerOptions = options_.initializer;
   initializerOptions.frames = static_cast<int>(sampled.size());
   initializerOptions.seed =
-      mixSeed(options_.seed, kInitializerStream, static_cast<std::uint64_t>(pendingIndices_.front()));
+      mixSeed(options_.seed, kInitializerStream, static_cast<std::uint64_t>(pending_.front().index));
   const InitializationResult result = LongRangeInitializer(initializerOptions).initialize(rig_, sampled);
 
   std::vector<FrameEstimate> estimates;
@@ -190,13 +187,10 @@ std::vector<FrameEstimate> Odometry::initialize() {
     // with as many samples as this attempt had.
     const std::size_t givenUp = samples_[1];
     for (std::size_t i = 0; i < givenUp; ++i) {
-      estimates.push_back(untracked(i));
+      estimates.push_back(untracked(pending_[i]));
       estimates.back().note = joinedNotes(estimates.back().note, "initialisation failed: " + result.failure);
     }
-    const auto end = static_cast<std::ptrdiff_t>(givenUp);
-    pending_.erase(pending_.begin(), pending_.begin() + end);
-    pendingIndices_.erase(pendingIndices_.begin(), pendingIndices_.begin() + end);
-    pendingNotes_.erase(pendingNotes_.begin(), pendingNotes_.begin() + end);
+    pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(givenUp));
     samples_.erase(samples_.begin());
     for (std::size_t& position : samples_) position -= givenUp;
     estimates.front().times.initialize_ms = std::exchange(initializeMsUnreported_, 0.0) + start.milliseconds();
@@ -206,37 +200,36 @@ std::vector<FrameEstimate> Odometry::initialize() {
 
   // The new segment's world is its first camera; place it where the last
   // segment's motion, carried on, puts that camera.
-  const Eigen::Isometry3d worldFromSegment = segmentPlacement(pending_.front().time_s);
+  const Eigen::Isometry3d worldFromSegment = segmentPlacement(pending_.front().observations.time_s);
   const Eigen::Isometry3d segmentFromWorld = worldFromSegment.inverse();
   std::map<int, Eigen::Vector3d> points;
   for (const auto& [track, point] : result.points) points.emplace(track, worldFromSegment * point);
   std::vector<Keyframe> keyframes;
   for (std::size_t i = 0; i < sampled.size(); ++i)
-    keyframes.push_back({pendingIndices_[samples_[i]], result.cameraFromWorld[i] * segmentFromWorld, sampled[i]});
+    keyframes.push_back({pending_[samples_[i]].index, result.cameraFromWorld[i] * segmentFromWorld, sampled[i]});
   window_.reset(keyframes, std::move(points), result.extrinsics, result.kappaRelativeStd);
   ++segment_;
   tracking_ = true;
   const double initialize_ms = std::exchange(initializeMsUnreported_, 0.0) + start.milliseconds();
 
   for (std::size_t i = 0, sample = 0; i < pending_.size(); ++i) {
-    FrameEstimate estimate;
+    const FrameObservations& observations = pending_[i].observations;
+    FrameEstimate estimate = untracked(pending_[i]);
     if (sample < samples_.size() && samples_[sample] == i) {
-      estimate = untracked(i);
       estimate.tracked = true;
       estimate.keyframe = true;
       estimate.segment = segment_;
       estimate.cameraFromWorld = keyframes[sample++].cameraFromWorld;
-      estimate.extrinsics = window_.extrinsicsAt(pending_[i].time_s);
+      estimate.extrinsics = window_.extrinsicsAt(observations.time_s);
       estimate.windowRmsError_px = result.rmsReprojectionError_px;
       estimate.bundleIterations = result.summary.iterationCount();
     } else {
-      estimate = untracked(i);
       Eigen::Isometry3d pose;
-      if (estimateFramePose(pending_[i], pendingIndices_[i], pose, estimate)) {
+      if (estimateFramePose(observations, pending_[i].index, pose, estimate)) {
         estimate.tracked = true;
         estimate.segment = segment_;
         estimate.cameraFromWorld = pose;
-        estimate.extrinsics = window_.extrinsicsAt(pending_[i].time_s);
+        estimate.extrinsics = window_.extrinsicsAt(observations.time_s);
       }
     }
     estimate.mapPoints = static_cast<int>(window_.points().size());

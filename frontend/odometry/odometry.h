@@ -99,8 +99,14 @@ class Odometry {
   bool estimateFramePose(const FrameObservations& frame, int index, Eigen::Isometry3d& cameraFromWorld,
                          FrameEstimate& estimate);
   FrameEstimate untracked(const FrameObservations& frame, int index) const;
-  // The buffered frame at this position, without a pose, noted with why the map could not pose it.
-  FrameEstimate untracked(std::size_t pendingPosition) const;
+  // A frame buffered while initialising: the frame, its index, and why the map could not pose it (empty: not tried).
+  struct PendingFrame {
+    FrameObservations observations;
+    int index = 0;
+    std::string note;
+  };
+  // A buffered frame without a pose, with its note.
+  FrameEstimate untracked(const PendingFrame& pending) const;
   void clearPending();
   // "N pose inliers of M mapped matches (K needed)", for a frame the map could not pose.
   std::string poseShortfall(const FrameEstimate& estimate) const;
@@ -114,14 +120,11 @@ class Odometry {
   bool tracking_ = false;
   int nextFrame_ = 0;
   int segment_ = -1;
-  // Buffered while initialising: the frames, their indices and their notes.
-  std::vector<FrameObservations> pending_;
-  std::vector<int> pendingIndices_;
-  std::vector<std::string> pendingNotes_;  // why the map could not pose each (empty: not tried)
-  std::vector<std::size_t> samples_;       // the initialiser's samples: positions in pending_
-  int samplesWanted_ = 0;                  // the next attempt's sample count (initializer.frames, or more)
-  double initializeMsUnreported_ = 0.0;    // attempts not yet reported in a frame's times
-  ConstantVelocity motion_;                // of the measured poses
+  std::vector<PendingFrame> pending_;    // buffered while initialising, in frame order
+  std::vector<std::size_t> samples_;     // the initialiser's samples: positions in pending_
+  int samplesWanted_ = 0;                // the next attempt's sample count (initializer.frames, or more)
+  double initializeMsUnreported_ = 0.0;  // attempts not yet reported in a frame's times
+  ConstantVelocity motion_;              // of the measured poses
   std::vector<int> rejectedTracks_;
 };
 
