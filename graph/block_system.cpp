@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "lrsvo/graph/balanced_ranges.h"
 #include "lrsvo/graph/block_kernels.h"
@@ -24,16 +25,38 @@ constexpr int kMaxCarriedRanges = 8;
 // outnumber them this many times.
 constexpr double kPartialSumsPayback = 8.0;
 
+// Each edge's vertex count, then the graph position of each of its vertices
+// (-1 for one not in the graph), edge by edge in graph order: every lookup
+// of the set-up, made once.
+LargeArray<int> edgeVertexPositions(const Graph& graph, const VertexPositions& positions) {
+  std::size_t size = 0;
+  for (const auto& edge : graph.edges()) size += 1 + static_cast<std::size_t>(edge->vertexCount());
+  LargeArray<int> list(size);
+  std::size_t next = 0;
+  for (const auto& edge : graph.edges()) {
+    const int n = edge->vertexCount();
+    if (n > std::numeric_limits<std::int16_t>::max())
+      throw Error(std::string("edge ") + edge->typeTag() + " joins " + std::to_string(n) + " vertices; at most " +
+                  std::to_string(std::numeric_limits<std::int16_t>::max()) + " are supported");
+    list[next++] = n;
+    for (int a = 0; a < n; ++a) list[next++] = positions.find(edge->vertex(a));
+  }
+  return list;
+}
+
 // Active vertices (non-fixed, on at least one edge) in graph order, free ones
 // first when the Schur ordering is asked for.
-std::vector<Vertex*> orderVertices(const Graph& graph, const VertexPositions& positions, bool schurOrdering,
+std::vector<Vertex*> orderVertices(const Graph& graph, const LargeArray<int>& vertexPositions, bool schurOrdering,
                                    int* freeCount) {
   std::vector<char> used(graph.vertices().size(), 0);
-  for (const auto& edge : graph.edges())
-    for (const Vertex* v : edge->vertices()) {
-      const int position = positions.find(v);
-      if (position >= 0 && !v->fixed()) used[static_cast<std::size_t>(position)] = 1;
+  for (std::size_t next = 0; next < vertexPositions.size();) {
+    const int n = vertexPositions[next++];
+    for (int a = 0; a < n; ++a, ++next) {
+      const int position = vertexPositions[next];
+      if (position >= 0 && !graph.vertices()[static_cast<std::size_t>(position)]->fixed())
+        used[static_cast<std::size_t>(position)] = 1;
     }
+  }
   std::vector<Vertex*> free, marginalised;
   for (std::size_t i = 0; i < used.size(); ++i) {
     if (!used[i]) continue;
@@ -70,26 +93,28 @@ struct PairSlot {
   int b;  // the edge's local index of the column vertex
 };
 
+// Stable sort of pairs whose rows lie in [0, maxRow], by row: counts, then
+// places, through `scratch` (kept for the next call).
+template <typename Iterator>
+void countingSortByRow(Iterator first, Iterator last, int maxRow, std::vector<PairSlot>& scratch,
+                       std::vector<std::size_t>& counts) {
+  counts.assign(static_cast<std::size_t>(maxRow) + 2, 0);
+  for (Iterator slot = first; slot != last; ++slot) ++counts[static_cast<std::size_t>(slot->row) + 1];
+  for (std::size_t r = 0; r + 1 < counts.size(); ++r) counts[r + 1] += counts[r];
+  scratch.assign(first, last);
+  for (const PairSlot& slot : scratch) *(first + static_cast<std::ptrdiff_t>(counts[slot.row]++)) = slot;
+}
+
 // Each edge's vertex count, then the block of each of its vertices (-1 for a
-// fixed one), edge by edge in graph order.
-LargeArray<int> edgeVertexBlocks(const Graph& graph, const VertexPositions& positions,
-                                 const std::vector<int>& blockOfPosition) {
-  std::size_t size = 0;
-  for (const auto& edge : graph.edges()) size += 1 + static_cast<std::size_t>(edge->vertexCount());
-  LargeArray<int> blocks(size);
-  std::size_t next = 0;
-  for (const auto& edge : graph.edges()) {
-    const int n = edge->vertexCount();
-    if (n > std::numeric_limits<std::int16_t>::max())
-      throw Error(std::string("edge ") + edge->typeTag() + " joins " + std::to_string(n) + " vertices; at most " +
-                  std::to_string(std::numeric_limits<std::int16_t>::max()) + " are supported");
-    blocks[next++] = n;
-    for (int a = 0; a < n; ++a) {
-      const int position = positions.find(edge->vertex(a));
-      blocks[next++] = position >= 0 ? blockOfPosition[static_cast<std::size_t>(position)] : -1;
-    }
+// fixed one), edge by edge in graph order: edgeVertexPositions with each
+// position replaced by its block.
+LargeArray<int> edgeVertexBlocks(LargeArray<int> list, const std::vector<int>& blockOfPosition) {
+  for (std::size_t next = 0; next < list.size();) {
+    const int n = list[next++];
+    for (int a = 0; a < n; ++a, ++next)
+      if (list[next] >= 0) list[next] = blockOfPosition[static_cast<std::size_t>(list[next])];
   }
-  return blocks;
+  return list;
 }
 
 // Calls visit(row, col, carrier, edge, a, b) for every pair of an edge's
@@ -122,27 +147,45 @@ void forEachPair(const Graph& graph, const LargeArray<int>& vertexBlocks, int fr
 // Every pair, bucketed by column in two passes over the edges (count, then
 // place) and sorted by row within its column, each pair's edges in edge order
 // (the order H's blocks sum them in): no list of all pairs is sorted or
-// copied. columnStart gets the buckets' bounds (CSR).
+// copied. A column's diagonal pairs (row == col, the largest row) are placed
+// at its end as they come, so only the others are sorted; a graph built frame
+// by frame gives them in row order already. columnStart gets the buckets'
+// bounds (CSR).
 LargeArray<PairSlot> pairsByColumn(const Graph& graph, const LargeArray<int>& vertexBlocks, int blockCount,
                                    int freeCount, std::vector<std::size_t>* columnStart) {
   std::vector<std::size_t>& start = *columnStart;
   start.assign(static_cast<std::size_t>(blockCount) + 1, 0);
+  std::vector<std::size_t> diagonals(static_cast<std::size_t>(blockCount), 0);
   forEachPair(graph, vertexBlocks, freeCount, [&](int row, int col, int, const Edge* edge, int a, int b) {
     if (row == col && a != b)
       throw Error(std::string("edge ") + edge->typeTag() + " names vertex " + std::to_string(edge->vertex(a)->id()) +
                   " twice");
     ++start[static_cast<std::size_t>(col) + 1];
+    if (row == col) ++diagonals[static_cast<std::size_t>(col)];
   });
   for (std::size_t c = 0; c + 1 < start.size(); ++c) start[c + 1] += start[c];
   LargeArray<PairSlot> slots(start.back());
-  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  std::vector<std::size_t> next(start.begin(), start.end() - 1), nextDiagonal(diagonals.size());
+  for (std::size_t c = 0; c < diagonals.size(); ++c) nextDiagonal[c] = start[c + 1] - diagonals[c];
   forEachPair(graph, vertexBlocks, freeCount, [&](int row, int col, int carrier, Edge* edge, int a, int b) {
-    slots[next[static_cast<std::size_t>(col)]++] = PairSlot{row, carrier, edge, a, b};
+    std::size_t& place = (row == col ? nextDiagonal : next)[static_cast<std::size_t>(col)];
+    slots[place++] = PairSlot{row, carrier, edge, a, b};
   });
-  for (std::size_t c = 0; c + 1 < start.size(); ++c)
-    stableSortBy(slots.begin() + static_cast<std::ptrdiff_t>(start[c]),
-                 slots.begin() + static_cast<std::ptrdiff_t>(start[c + 1]),
-                 [](const PairSlot& slot) { return slot.row; });
+  std::vector<PairSlot> scratch;
+  std::vector<std::size_t> rowCounts;
+  for (std::size_t c = 0; c + 1 < start.size(); ++c) {
+    const auto first = slots.begin() + static_cast<std::ptrdiff_t>(start[c]);
+    const auto last = slots.begin() + static_cast<std::ptrdiff_t>(start[c + 1] - diagonals[c]);
+    const auto byRow = [](const PairSlot& x, const PairSlot& y) { return x.row < y.row; };
+    if (std::is_sorted(first, last, byRow)) continue;
+    // The rows lie in [0, c). Where the column holds more pairs than that (a
+    // vertex early in the order shared by many edges, such as the stereo
+    // extrinsic), a counting sort orders it in one pass.
+    if (last - first > 32 && static_cast<std::ptrdiff_t>(c) < last - first)
+      countingSortByRow(first, last, static_cast<int>(c), scratch, rowCounts);
+    else
+      stableSortBy(first, last, [](const PairSlot& slot) { return slot.row; });
+  }
   return slots;
 }
 
@@ -155,7 +198,8 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) : schurOrdering
   graphVertices.reserve(graph.vertices().size());
   for (const auto& v : graph.vertices()) graphVertices.push_back(v.get());
   const VertexPositions positions(graphVertices);
-  vertices_ = orderVertices(graph, positions, schurOrdering, &freeCount_);
+  LargeArray<int> vertexPositions = edgeVertexPositions(graph, positions);
+  vertices_ = orderVertices(graph, vertexPositions, schurOrdering, &freeCount_);
   if (vertices_.empty()) throw Error("optimise: every vertex on an edge is fixed; nothing to optimise");
 
   // The block of each graph position, -1 for fixed vertices and those on no edge.
@@ -171,7 +215,7 @@ BlockSystem::BlockSystem(const Graph& graph, bool schurOrdering) : schurOrdering
 
   edges_.reserve(graph.edges().size());
   for (const auto& edge : graph.edges()) edges_.push_back(edge.get());
-  edgeVertexBlocks_ = edgeVertexBlocks(graph, positions, blockOfPosition);
+  edgeVertexBlocks_ = edgeVertexBlocks(std::move(vertexPositions), blockOfPosition);
   std::vector<std::size_t> columnStart;
   LargeArray<PairSlot> slots = pairsByColumn(graph, edgeVertexBlocks_, blockCount(), freeCount_, &columnStart);
 

@@ -19,11 +19,12 @@ void Graph::insertEdge(std::unique_ptr<Edge> edge) {
   if (!edge) throw Error("addEdge: null edge");
   for (int k = 0; k < edge->vertexCount(); ++k) {
     const Vertex* v = edge->vertex(k);
-    const std::string where = std::string("addEdge ") + edge->typeTag() + ": vertex slot " + std::to_string(k);
-    if (!v) throw Error(where + " is empty");
-    if (vertex(v->id()) != v) throw Error(where + " names vertex " + std::to_string(v->id()) + ", not in the graph");
+    // The message is built only on failure: graphs of millions of edges pass through here.
+    const auto where = [&] { return std::string("addEdge ") + edge->typeTag() + ": vertex slot " + std::to_string(k); };
+    if (!v) throw Error(where() + " is empty");
+    if (vertex(v->id()) != v) throw Error(where() + " names vertex " + std::to_string(v->id()) + ", not in the graph");
     if (!edge->acceptsVertex(k, *v))
-      throw Error(where + " cannot hold vertex " + std::to_string(v->id()) + " of type " + v->typeTag());
+      throw Error(where() + " cannot hold vertex " + std::to_string(v->id()) + " of type " + v->typeTag());
   }
   edges_.push_back(std::move(edge));
 }

@@ -52,6 +52,7 @@ BundleGraph::BundleGraph(const Rig& rig, const SparseMap& map, int fixedPoses, B
   extrinsics_.assign(rig.secondaryCount(), nullptr);
   rates_.assign(rig.secondaryCount(), nullptr);
   if (!(options_.sigma_px > 0.0)) throw Error("bundle graph: sigma_px must be positive");
+  if (!options_.robustKernel.empty()) kernel_ = makeRobustKernel(options_.robustKernel, options_.robustKernelDelta);
   for (std::size_t i = 0; i < map.cameraFromWorld.size(); ++i) {
     auto pose = std::make_unique<VertexPose>(nextId_++, map.cameraFromWorld[i]);
     pose->setFixed(static_cast<int>(i) < fixedPoses);

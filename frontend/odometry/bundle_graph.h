@@ -1,6 +1,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,7 @@ class BundleGraph {
  private:
   const Rig& rig_;
   BundleGraphOptions options_;
+  std::shared_ptr<RobustKernel> kernel_;  // shared by every projection edge; nullptr for none
   Graph graph_;
   int nextId_ = 0;
   std::vector<VertexPose*> poses_;
@@ -128,8 +130,7 @@ class BundleGraph {
   void measure(ProjectionEdge& edge, const Eigen::Vector2d& pixel) const {
     edge.setMeasurement(pixel);
     edge.setInformation(Eigen::Matrix2d::Identity() / (options_.sigma_px * options_.sigma_px));
-    if (!options_.robustKernel.empty())
-      edge.setRobustKernel(makeRobustKernel(options_.robustKernel, options_.robustKernelDelta));
+    if (kernel_) edge.setRobustKernel(kernel_);
   }
 };
 

@@ -119,6 +119,49 @@ TEST(BlockSystem, SchurOrderingSumsTheSameSystem) {
   EXPECT_LE(largestDifference, 1e-12 * scale);
 }
 
+// Each block of H sums its edges' shares in the order of the graph's edges,
+// whatever order the set-up finds them in, so a solve is the same bit for bit
+// however the structure is sorted. Here every edge is on the shared scale,
+// last in the order: its column holds a pair of each edge, the rows (the
+// edge's pose and point) alternating, and is sorted by row before it is
+// summed. The reference adds each edge's blocks in edge order with the edge's
+// own kernel, so the two must agree exactly.
+TEST(BlockSystem, SumsEveryBlockInEdgeOrder) {
+  ToyOptions options;
+  options.poses = 8;
+  options.points = 60;
+  options.posesPerPoint = 5;
+  options.sharedScale = true;
+  options.fixedPoses = 1;
+  options.randomInformation = true;
+  options.kernel = "cycle";
+  options.outlierFraction = 0.2;
+  Graph graph = makeToyProblem(options);
+  BlockSystem system(graph, false);
+  system.fill(1);
+
+  std::map<std::pair<int, int>, std::vector<double>> reference;  // (row, col) block -> values, column-major
+  for (const auto& edge : graph.edges()) {
+    edge->linearize();
+    for (int a = 0; a < edge->vertexCount(); ++a)
+      for (int b = 0; b < edge->vertexCount(); ++b) {
+        const int row = system.blockOf(edge->vertex(a)), col = system.blockOf(edge->vertex(b));
+        if (row < 0 || col < 0 || row > col) continue;
+        std::vector<double>& values = reference[{row, col}];
+        values.resize(static_cast<std::size_t>(system.dim(row) * system.dim(col)), 0.0);
+        edge->addHessianBlock(a, b, values.data(), system.dim(row));
+      }
+  }
+  ASSERT_EQ(reference.size(), system.blocks().size());
+  for (const BlockSystem::Block& block : system.blocks()) {
+    const auto found = reference.find({block.row, block.col});
+    ASSERT_NE(found, reference.end()) << "block (" << block.row << ", " << block.col << ")";
+    const std::vector<double>& expected = found->second;
+    for (std::size_t i = 0; i < expected.size(); ++i)
+      ASSERT_EQ(system.values(block)[i], expected[i]) << "block (" << block.row << ", " << block.col << ")";
+  }
+}
+
 // At a zero-residual point the Gauss-Newton H is the exact Hessian of the cost.
 TEST(BlockSystem, HessianAtAZeroResidualIsTheCostsSecondDerivative) {
   ToyOptions options;
