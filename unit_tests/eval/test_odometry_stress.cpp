@@ -11,6 +11,11 @@
 // metres. So an SE3-aligned ATE below 5 % of the distance flown is what a
 // working odometry gives on such a flight, and a loss of tracking (a new
 // segment placed by prediction) or a wrong pose breaks it.
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "lrsvo/eval/run_report.h"
@@ -35,9 +40,11 @@ struct StressRun {
   nlohmann::json metrics;
 };
 
-StressRun runStressFlight(const SimScenario& scenario) {
+StressRun runStressFlight(const SimScenario& scenario, std::ostream* progress = nullptr) {
   SimFrameSource source(scenario);
-  StressRun result{runOdometry(source, RunOptions{}), {}};
+  RunOptions options;
+  options.progress = progress;
+  StressRun result{runOdometry(source, options), {}};
   result.metrics = writeRunReport({}, result.run, source.groundTruth(), false).metrics;
   return result;
 }
@@ -84,11 +91,13 @@ TEST(OdometryRunSim, YawStepRotatingTheImageWithinAFrameLosesNoFrame) {
 // is posed against the map; one that keeps just enough (a few dozen corners
 // still follow at a tenth of the light) is posed as any frame. Every frame
 // has a pose, only the dark ones may be predicted, and the flight stays one
-// segment.
+// segment. The progress stream gives each relocalised frame a line of its
+// own, and it can only be a first good frame after a dark one (41 or 57).
 TEST(OdometryRunSim, DarkFramesArePredictedAndTheSegmentGoesOn) {
   SimScenario scenario = stressFlight(30.0, 60.0);
   scenario.faults.exposureJumps = {{40, 0.1}, {41, 1.0}, {55, 0.1}, {57, 1.0}};
-  const StressRun stress = runStressFlight(scenario);
+  std::ostringstream progress;
+  const StressRun stress = runStressFlight(scenario, &progress);
   const RunTotals& totals = stress.run.totals;
   EXPECT_EQ(totals.tracked + totals.predicted, totals.frames);
   EXPECT_GE(totals.predicted, 1);
@@ -101,6 +110,15 @@ TEST(OdometryRunSim, DarkFramesArePredictedAndTheSegmentGoesOn) {
   }
   EXPECT_GE(totals.relocalised, 1);
   EXPECT_LE(totals.relocalised, 2);
+  const std::string lines = progress.str();
+  const std::regex relocalisedLine(
+      R"(\nframe (\d+): relocalised against the map [0-9.]+ s after the last measured pose\n)");
+  std::set<int> relocalisedFrames;
+  for (auto line = std::sregex_iterator(lines.begin(), lines.end(), relocalisedLine); line != std::sregex_iterator();
+       ++line)
+    relocalisedFrames.insert(std::stoi((*line)[1].str()));
+  EXPECT_EQ(static_cast<int>(relocalisedFrames.size()), totals.relocalised) << lines;
+  for (int frame : relocalisedFrames) EXPECT_TRUE(frame == 41 || frame == 57) << "frame " << frame << "\n" << lines;
   EXPECT_EQ(totals.badFrames, 0);
   EXPECT_EQ(totals.segments, 1);
   ASSERT_TRUE(stress.metrics.contains("ate_rmse_m"));
