@@ -46,10 +46,11 @@ SolverSummary ConstraintMethod::solve(Graph& graph, const SolverOptions& options
 }
 
 SolverSummary ConstraintMethod::solveWith(Optimizer& optimizer, Graph& graph) {
-  const double initialCost = graph.cost();
+  const int threads = optimizer.options().threads;
+  const double initialCost = graph.cost(threads);
   SolverSummary summary = optimizer.optimize(graph, *this);
   summary.initialCost = initialCost;
-  summary.finalCost = graph.cost();
+  summary.finalCost = graph.cost(threads);
   return summary;
 }
 

@@ -47,7 +47,7 @@ class LogBarrier : public ConstraintMethod {
   // changes), so every round after the first solves the structure the first
   // one set up.
   SolverSummary solve(Graph& graph, const SolverOptions& options) override {
-    const double initialCost = graph.cost();
+    const double initialCost = graph.cost(options.threads);
     SolverSummary total;
     {
       Optimizer optimizer(options);
@@ -64,7 +64,7 @@ class LogBarrier : public ConstraintMethod {
     }
     // The graph's own costs, the barrier edges taken out.
     total.initialCost = initialCost;
-    total.finalCost = graph.cost();
+    total.finalCost = graph.cost(options.threads);
     return total;
   }
 

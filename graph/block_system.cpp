@@ -9,6 +9,7 @@
 
 #include "lrsvo/graph/balanced_ranges.h"
 #include "lrsvo/graph/block_kernels.h"
+#include "lrsvo/graph/edge_costs.h"
 #include "lrsvo/graph/error.h"
 #include "lrsvo/graph/parallel_for.h"
 #include "lrsvo/graph/vertex_positions.h"
@@ -438,14 +439,7 @@ void BlockSystem::fillMarginalisedRange(int r) {
   }
 }
 
-double BlockSystem::cost(int threads) const {
-  const int edgeCount = static_cast<int>(edges_.size());
-  std::vector<double> costs(edgeCount);
-  parallelFor(0, edgeCount, threads, [&](int e) { costs[e] = edges_[e]->cost(); });
-  double total = 0.0;
-  for (double c : costs) total += c;
-  return total;
-}
+double BlockSystem::cost(int threads) const { return sumOfEdgeCosts(edges_, threads); }
 
 void BlockSystem::setDiagonalShift(const Eigen::VectorXd& shift) {
   for (int i = 0; i < blockCount(); ++i) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "lrsvo/graph/edge_costs.h"
 #include "lrsvo/graph/error.h"
 
 namespace lrsvo {
@@ -48,10 +49,9 @@ Vertex* Graph::vertex(int id) const {
   return it == byId_.end() ? nullptr : it->second;
 }
 
-double Graph::cost() const {
-  double total = 0.0;
-  for (const auto& edge : edges_) total += edge->cost();
-  return total;
+double Graph::cost(int threads) const {
+  if (threads < 1) throw Error("cost: threads must be at least 1, got " + std::to_string(threads));
+  return sumOfEdgeCosts(edges_, threads);
 }
 
 std::vector<double> Graph::estimates() const {

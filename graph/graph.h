@@ -43,8 +43,10 @@ class Graph {
   const std::vector<std::unique_ptr<Edge>>& edges() const { return edges_; }
   bool empty() const { return vertices_.empty(); }
 
-  // Sum of all edge costs (Ceres' convention, 1/2 rho(||r||^2) per edge).
-  double cost() const;
+  // Sum of all edge costs (Ceres' convention, 1/2 rho(||r||^2) per edge),
+  // evaluated on `threads` threads (>= 1) and added in edge order: the same
+  // value for any count.
+  double cost(int threads = 1) const;
 
   // Every vertex's estimate, one after another in vertex order: a start to
   // come back to with setEstimates (say, to solve again from it).

@@ -271,7 +271,9 @@ void bindGraph(py::module_& m) {
       .def("__contains__", [](const Graph& g, int id) { return g.vertex(id) != nullptr; })
       .def_property_readonly("vertex_count", [](const Graph& g) { return g.vertices().size(); })
       .def_property_readonly("edge_count", [](const Graph& g) { return g.edges().size(); })
-      .def("cost", &Graph::cost, "The objective at the current estimates: 1/2 sum rho(|r|^2) over the edges.")
+      .def("cost", &Graph::cost, py::arg("threads") = 1,
+           "The objective at the current estimates: 1/2 sum rho(|r|^2) over the edges, evaluated on `threads` "
+           "threads (the same value for any count).")
       .def("optimize", &optimize, py::arg("solver") = "lm_schur_cholmod",
            py::arg("max_iterations") = SolverOptions{}.maxIterations, py::arg("threads") = 1,
            py::arg("function_tolerance") = SolverOptions{}.functionTolerance,

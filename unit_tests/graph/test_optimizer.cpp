@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "lrsvo/graph/error.h"
 #include "lrsvo/graph/linear_solver.h"
 #include "lrsvo/graph/optimizer.h"
 #include "lrsvo/graph/registry.h"
@@ -211,6 +212,22 @@ TEST(Optimizer, FunctionToleranceEndsAConvergedSolve) {
   const IterationRecord& last = summary.iterations.back();
   EXPECT_TRUE(last.accepted);
   EXPECT_LE(last.costChange / (last.cost + last.costChange), 1e-6);
+}
+
+// The graph's cost on threads adds the edges' costs in edge order, as one
+// thread does: the same value to the last bit, over several chunks of edges.
+TEST(Graph, CostIsTheSameOnAnyThreadCount) {
+  ToyOptions problem;
+  problem.points = 150;
+  problem.kernel = "cycle";
+  problem.outlierFraction = 0.2;
+  const Graph graph = makeToyProblem(problem);
+  double inOrder = 0.0;
+  for (const auto& edge : graph.edges()) inOrder += edge->cost();
+  EXPECT_EQ(graph.cost(), inOrder);
+  EXPECT_EQ(graph.cost(2), inOrder);
+  EXPECT_EQ(graph.cost(3), inOrder);
+  EXPECT_THROW(graph.cost(0), Error);
 }
 
 TEST(Optimizer, TwoThreadsGiveTheSameResultAsOne) {
