@@ -42,15 +42,10 @@ void ConstraintMethod::enforceStart(bool interior) const {
 
 SolverSummary ConstraintMethod::solve(Graph& graph, const SolverOptions& options) {
   Optimizer optimizer(options);
-  return solveWith(optimizer, graph);
-}
-
-SolverSummary ConstraintMethod::solveWith(Optimizer& optimizer, Graph& graph) {
-  const int threads = optimizer.options().threads;
-  const double initialCost = graph.cost(threads);
+  const double initialCost = graph.cost(options.threads);
   SolverSummary summary = optimizer.optimize(graph, *this);
   summary.initialCost = initialCost;
-  summary.finalCost = graph.cost(threads);
+  summary.finalCost = graph.cost(options.threads);
   return summary;
 }
 

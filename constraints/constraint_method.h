@@ -77,10 +77,6 @@ class ConstraintMethod : public ConstraintHandler {
   void begin(Graph& graph) override;
 
  protected:
-  // One solve under this method's hooks on the given optimizer (which keeps
-  // its structure for a next solve, e.g. a later round); the summary's costs
-  // are the graph's own, as solve() reports them.
-  SolverSummary solveWith(Optimizer& optimizer, Graph& graph);
   // Applies the start policy; `interior` asks for a strictly interior start.
   void enforceStart(bool interior) const;
   virtual bool needsInteriorStart() const { return false; }

@@ -7,6 +7,7 @@
 #include "lrsvo/constraints/builtin_methods.h"
 #include "lrsvo/constraints/constraint_method.h"
 #include "lrsvo/graph/error.h"
+#include "lrsvo/graph/optimizer.h"
 #include "lrsvo/graph/registry.h"
 
 namespace lrsvo {
@@ -55,7 +56,8 @@ class LogBarrier : public ConstraintMethod {
       keepEdges_ = true;
       const EdgeRemoval removal{*this, graph};
       for (round_ = 0; round_ < std::max(1, rounds_); ++round_, mu_ *= decrease_) {
-        const SolverSummary part = solveWith(optimizer, graph);
+        // A round's costs count the barrier; the total's are the graph's own, set below.
+        const SolverSummary part = optimizer.optimize(graph, *this);
         if (round_ == 0)
           total = part;
         else

@@ -45,19 +45,26 @@ LargeArray<int> edgeVertexPositions(const Graph& graph, const VertexPositions& p
   return list;
 }
 
+// Calls visit(entry) on each vertex's entry of a list laid out as
+// edgeVertexPositions lays it out (each edge's vertex count, then an entry per
+// vertex), in order.
+template <typename List, typename Visit>
+void forEachVertexEntry(List& list, const Visit& visit) {
+  for (std::size_t next = 0; next < list.size();) {
+    const int n = list[next++];
+    for (int a = 0; a < n; ++a) visit(list[next++]);
+  }
+}
+
 // Active vertices (non-fixed, on at least one edge) in graph order, free ones
 // first when the Schur ordering is asked for.
 std::vector<Vertex*> orderVertices(const Graph& graph, const LargeArray<int>& vertexPositions, bool schurOrdering,
                                    int* freeCount) {
   std::vector<char> used(graph.vertices().size(), 0);
-  for (std::size_t next = 0; next < vertexPositions.size();) {
-    const int n = vertexPositions[next++];
-    for (int a = 0; a < n; ++a, ++next) {
-      const int position = vertexPositions[next];
-      if (position >= 0 && !graph.vertices()[static_cast<std::size_t>(position)]->fixed())
-        used[static_cast<std::size_t>(position)] = 1;
-    }
-  }
+  forEachVertexEntry(vertexPositions, [&](int position) {
+    if (position >= 0 && !graph.vertices()[static_cast<std::size_t>(position)]->fixed())
+      used[static_cast<std::size_t>(position)] = 1;
+  });
   std::vector<Vertex*> free, marginalised;
   for (std::size_t i = 0; i < used.size(); ++i) {
     if (!used[i]) continue;
@@ -110,11 +117,9 @@ void countingSortByRow(Iterator first, Iterator last, int maxRow, std::vector<Pa
 // fixed one), edge by edge in graph order: edgeVertexPositions with each
 // position replaced by its block.
 LargeArray<int> edgeVertexBlocks(LargeArray<int> list, const std::vector<int>& blockOfPosition) {
-  for (std::size_t next = 0; next < list.size();) {
-    const int n = list[next++];
-    for (int a = 0; a < n; ++a, ++next)
-      if (list[next] >= 0) list[next] = blockOfPosition[static_cast<std::size_t>(list[next])];
-  }
+  forEachVertexEntry(list, [&](int& entry) {
+    if (entry >= 0) entry = blockOfPosition[static_cast<std::size_t>(entry)];
+  });
   return list;
 }
 
@@ -177,12 +182,11 @@ LargeArray<PairSlot> pairsByColumn(const Graph& graph, const LargeArray<int>& ve
   for (std::size_t c = 0; c + 1 < start.size(); ++c) {
     const auto first = slots.begin() + static_cast<std::ptrdiff_t>(start[c]);
     const auto last = slots.begin() + static_cast<std::ptrdiff_t>(start[c + 1] - diagonals[c]);
-    const auto byRow = [](const PairSlot& x, const PairSlot& y) { return x.row < y.row; };
-    if (std::is_sorted(first, last, byRow)) continue;
+    if (std::is_sorted(first, last, [](const PairSlot& x, const PairSlot& y) { return x.row < y.row; })) continue;
     // The rows lie in [0, c). Where the column holds more pairs than that (a
     // vertex early in the order shared by many edges, such as the stereo
     // extrinsic), a counting sort orders it in one pass.
-    if (last - first > 32 && static_cast<std::ptrdiff_t>(c) < last - first)
+    if (static_cast<std::ptrdiff_t>(c) < last - first)
       countingSortByRow(first, last, static_cast<int>(c), scratch, rowCounts);
     else
       stableSortBy(first, last, [](const PairSlot& slot) { return slot.row; });
